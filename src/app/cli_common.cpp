@@ -1,0 +1,110 @@
+#include "app/cli_common.h"
+
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include <spdlog/spdlog.h>
+
+#include "core/error.h"
+#include "methods/method.h"
+
+namespace mirage::app {
+
+void addSceneOptions(CLI::App* app, SceneArgs& args) {
+  app->add_option("--scene", args.scene,
+                  "built-in or asset scene name (see `mirage scenes`), a .json scene file, or a "
+                  "mesh file (.ply, .ply.gz, .obj, .gltf, .glb, ...)")
+      ->required();
+  app->add_option("--reflectors", args.reflectors, "spheres9: keep the first N reflectors (1..9)");
+  app->add_option("--camera", args.camera, "the scene camera to use (default: the first)");
+  app->add_option("--time", args.time, "scene time in seconds (animated scenes)");
+}
+
+void addFrameOptions(CLI::App* app, FrameArgs& args) {
+  app->add_option("--size", args.size, "image size WxH (1..16384 each)")->capture_default_str();
+  app->add_option("--order", args.order, "reflection order K (0..16; 0 = no reflections)")
+      ->capture_default_str();
+  app->add_option("--mip", args.mip, "mip-mapped reflection lookups: on|off")->capture_default_str();
+  app->add_option("--exposure", args.exposure, "exposure multiplier before tone mapping (> 0)")
+      ->capture_default_str();
+  app->add_option("--tonemap", args.tonemap, "tone map: clamp|reinhard|aces")->capture_default_str();
+}
+
+void addMethodParamOptions(CLI::App* app, std::map<std::string, std::string>& values) {
+  for (const ParamSpec& spec : allMethodParams()) {
+    std::string name = spec.name;
+    app->add_option_function<std::string>(
+           "--" + name, [&values, name](const std::string& v) { values[name] = v; },
+           spec.help + " (" + spec.rangeText() + ", default " + spec.default_value + ")")
+        ->group("Method parameters");
+  }
+}
+
+ivec2 parseSize(const std::string& text) {
+  int w = 0, h = 0;
+  char x = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X'))
+    throwInput("--size {}: expected WxH, e.g. 720x512", text);
+  if (w < 1 || h < 1 || w > 16384 || h > 16384)
+    throwInput("--size {}: each side must be in 1..16384", text);
+  return {w, h};
+}
+
+Scene loadSceneFromArgs(const SceneArgs& args) {
+  SceneOptions options;
+  options.reflectors = args.reflectors;
+  return loadScene(args.scene, options);
+}
+
+FrameSettings frameSettings(const FrameArgs& args) {
+  if (args.order < 0 || args.order > 16) throwInput("--order {}: allowed 0..16", args.order);
+  if (args.mip != "on" && args.mip != "off") throwInput("--mip {}: allowed on|off", args.mip);
+  FrameSettings s;
+  s.order = args.order;
+  s.mip = args.mip == "on";
+  return s;
+}
+
+DisplaySettings displaySettings(const FrameArgs& args) {
+  if (!(args.exposure > 0.0f) || !std::isfinite(args.exposure))
+    throwInput("--exposure {}: must be a finite number > 0", args.exposure);
+  return {args.exposure, parseToneMap(args.tonemap)};
+}
+
+std::unique_ptr<gpu::Context> openHeadlessContext() {
+  gpu::ContextOptions options;
+  options.debug = gpu::debugContextByDefault();
+  return gpu::createHeadlessContext(options);
+}
+
+void warnUnusedParams(const std::map<std::string, std::string>& values,
+                      const std::vector<std::string>& methods) {
+  for (const auto& [name, value] : values) {
+    bool used = false;
+    for (const std::string& m : methods)
+      for (const ParamSpec& spec : findMethod(m).info.params) used = used || spec.name == name;
+    if (!used) spdlog::warn("--{} {} is ignored: none of the selected methods uses it", name, value);
+  }
+}
+
+std::string cpuDescription() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line, model = "unknown CPU";
+  while (std::getline(in, line))
+    if (line.rfind("model name", 0) == 0) {
+      model = line.substr(line.find(':') + 2);
+      break;
+    }
+  return fmt::format("{} ({} threads)", model, std::thread::hardware_concurrency());
+}
+
+void ensureDirectory(const std::string& path) {
+  std::error_code ec;
+  std::filesystem::create_directories(path, ec);
+  if (ec || !std::filesystem::is_directory(path))
+    throwInput("-o {}: cannot create the output directory ({})", path,
+               ec ? ec.message() : "a file of that name exists");
+}
+
+}  // namespace mirage::app

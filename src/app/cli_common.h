@@ -1,0 +1,52 @@
+// Options and steps that several commands share: the scene, the image size, the reflection
+// order, the display transform and every method's parameters.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "core/display.h"
+#include "gpu/context.h"
+#include "render/scene_passes.h"
+#include "scene/scene_loader.h"
+
+namespace mirage::app {
+
+struct SceneArgs {
+  std::string scene;
+  int reflectors = -1;
+  std::string camera;
+  float time = 0.0f;
+};
+
+struct FrameArgs {
+  std::string size = "720x512";
+  int order = 2;
+  std::string mip = "on";
+  float exposure = 1.0f;
+  std::string tonemap = "aces";
+};
+
+void addSceneOptions(CLI::App* app, SceneArgs& args);
+void addFrameOptions(CLI::App* app, FrameArgs& args);
+// Registers --<name> for every method parameter; given values land in `values`.
+void addMethodParamOptions(CLI::App* app, std::map<std::string, std::string>& values);
+
+// "WxH" with 1 <= W, H <= 16384; throws InputError naming the option.
+ivec2 parseSize(const std::string& text);
+Scene loadSceneFromArgs(const SceneArgs& args);
+FrameSettings frameSettings(const FrameArgs& args);
+DisplaySettings displaySettings(const FrameArgs& args);
+std::unique_ptr<gpu::Context> openHeadlessContext();
+// Warns about given method parameters that none of `methods` uses.
+void warnUnusedParams(const std::map<std::string, std::string>& values,
+                      const std::vector<std::string>& methods);
+// The CPU model from /proc/cpuinfo and the core count.
+std::string cpuDescription();
+// Creates `path` as a directory (and parents); InputError if that is impossible.
+void ensureDirectory(const std::string& path);
+
+}  // namespace mirage::app

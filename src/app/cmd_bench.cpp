@@ -1,0 +1,187 @@
+// `mirage bench`: frame times of several methods, measured in one run on the same frames
+// (interleaved, so that drift of the machine affects all alike), written as JSON.
+#include <algorithm>
+#include <cstdlib>
+
+#include <nlohmann/json.hpp>
+#include <spdlog/spdlog.h>
+
+#include "app/cli_common.h"
+#include "app/commands.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/progress.h"
+#include "core/timer.h"
+#include "eval/metrics.h"
+#include "methods/frame.h"
+
+namespace mirage::app {
+
+namespace {
+
+struct BenchArgs {
+  SceneArgs scene;
+  FrameArgs frame;
+  std::string methods = "none,envmap,raytrace";
+  int frames = 100;
+  int warmup = 5;
+  double raytrace_budget_s = 20.0;
+  std::string json;
+  std::map<std::string, std::string> params;
+};
+
+struct Summary {
+  double min = 0, median = 0, p95 = 0;
+};
+
+Summary summarize(std::vector<double> v) {
+  if (v.empty()) return {};
+  std::sort(v.begin(), v.end());
+  auto at = [&](double q) {
+    double pos = q * double(v.size() - 1);
+    size_t i = size_t(pos);
+    double f = pos - double(i);
+    return i + 1 < v.size() ? v[i] * (1 - f) + v[i + 1] * f : v[i];
+  };
+  return {v.front(), at(0.5), at(0.95)};
+}
+
+nlohmann::json orNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+struct Run {
+  std::string name;
+  std::unique_ptr<Method> method;
+  std::unique_ptr<gpu::FrameTimer> timer;
+  int frames = 0;  // frames to time
+  size_t reflector_pixels = 0;
+};
+
+int runBench(const BenchArgs& args) {
+  ivec2 size = parseSize(args.frame.size);
+  FrameSettings settings = frameSettings(args.frame);
+  if (args.frames < 1 || args.frames > 1000000) throwInput("--frames {}: allowed 1..1000000", args.frames);
+  if (args.warmup < 0 || args.warmup > 100000) throwInput("--warmup {}: allowed 0..100000", args.warmup);
+  if (!(args.raytrace_budget_s > 0.0)) throwInput("--raytrace-budget {}: must be > 0", args.raytrace_budget_s);
+  std::vector<std::string> names = parseMethodList(args.methods);
+  warnUnusedParams(args.params, names);
+  Scene scene = loadSceneFromArgs(args.scene);
+  View view(scene.camera(args.scene.camera), size);
+  auto context = openHeadlessContext();
+  FrameRenderer renderer(scene, size);
+  gpu::Clock gpu_clock = gpu::defaultClock(context->info().software);
+
+  std::vector<Run> runs;
+  for (const std::string& name : names) {
+    Run r;
+    r.name = name;
+    r.method = renderer.createMethod(name, args.params, settings);
+    r.timer = std::make_unique<gpu::FrameTimer>(r.method->info().gpu ? gpu_clock : gpu::Clock::kWall);
+    r.frames = args.frames;
+    runs.push_back(std::move(r));
+  }
+  // Warm-up: first frames (captures, BVH builds, shader compilation in the driver).
+  for (Run& r : runs) {
+    Stopwatch first;
+    for (int i = 0; i < std::max(args.warmup, 1); ++i)
+      renderer.render(*r.method, view, args.scene.time, settings);
+    glFinish();
+    // The CPU reference is timed on as many frames as the budget affords.
+    if (!r.method->info().gpu) {
+      double per_frame_s = first.ms() / 1000.0 / double(std::max(args.warmup, 1));
+      r.frames = std::clamp(int(args.raytrace_budget_s / std::max(per_frame_s, 1e-6)), 3, args.frames);
+    }
+    r.reflector_pixels = countNonZero(renderer.read().ids);
+  }
+  size_t total = 0;
+  for (const Run& r : runs) total += size_t(r.frames);
+  Progress progress("bench", total);
+  for (int f = 0; f < args.frames; ++f)
+    for (Run& r : runs) {
+      if (f >= r.frames) continue;
+      renderer.render(*r.method, view, args.scene.time, settings, r.timer.get());
+      progress.advance();
+    }
+
+  nlohmann::json methods = nlohmann::json::object();
+  std::map<std::string, double> medians;
+  std::map<std::string, nlohmann::json> entries;
+  for (Run& r : runs) {
+    std::vector<gpu::FrameTimes> times = r.timer->takeResults();
+    std::vector<double> total_ms;
+    std::array<std::vector<double>, gpu::kPartCount> parts;
+    for (const auto& t : times) {
+      total_ms.push_back(t.total_ms);
+      for (int p = 0; p < gpu::kPartCount; ++p) parts[size_t(p)].push_back(t.part_ms[size_t(p)]);
+    }
+    Summary s = summarize(total_ms);
+    medians[r.name] = s.median;
+    nlohmann::json e;
+    e["ms"] = {{"min", s.min}, {"median", s.median}, {"p95", s.p95}};
+    nlohmann::json ms_parts;
+    for (int p = 0; p < gpu::kPartCount; ++p)
+      ms_parts[gpu::partName(gpu::Part(p))] = summarize(parts[size_t(p)]).median;
+    e["ms_parts"] = ms_parts;
+    e["fps"] = orNull(1000.0 / s.median);
+    e["frames"] = r.frames;
+    e["clock"] = gpu::clockName(r.timer->clock());
+    e["reflector_pixels"] = r.reflector_pixels;
+    e["reflected_rays_per_s"] = orNull(double(r.reflector_pixels) * 1000.0 / s.median);
+    e["order_rendered"] = r.method->orderRendered(settings.order);
+    nlohmann::json stats = nlohmann::json::object();
+    for (const auto& [k, v] : r.method->stats()) stats[k] = orNull(v);
+    e["stats"] = stats;
+    entries[r.name] = e;
+  }
+  for (Run& r : runs) {
+    nlohmann::json& e = entries[r.name];
+    auto ratio = [&](const char* base) {
+      auto it = medians.find(base);
+      return it == medians.end() ? nlohmann::json(nullptr) : orNull(medians[r.name] / it->second);
+    };
+    e["ratio_to_none"] = ratio("none");
+    e["ratio_to_envmap"] = ratio("envmap");
+    e["ratio_to_raytrace"] = ratio("raytrace");
+    methods[r.name] = e;
+    spdlog::info("{:>16}: median {:8.2f} ms, min {:8.2f}, p95 {:8.2f} ({} frames)", r.name,
+                 e["ms"]["median"].get<double>(), e["ms"]["min"].get<double>(),
+                 e["ms"]["p95"].get<double>(), r.frames);
+  }
+  nlohmann::json j;
+  j["scene"] = scene.name;
+  j["size"] = {size.x, size.y};
+  j["device"] = context->info().renderer + " (" + context->info().version + ")";
+  j["cpu"] = cpuDescription();
+  const char* lp = std::getenv("LP_NUM_THREADS");
+  j["lp_num_threads"] = lp ? nlohmann::json(lp) : nlohmann::json(nullptr);
+  j["triangles"] = scene.triangleCount();
+  j["order"] = settings.order;
+  j["frames"] = args.frames;
+  j["warmup"] = args.warmup;
+  j["methods"] = methods;
+  writeFileAtomic(args.json, j.dump(2) + "\n");
+  return 0;
+}
+
+}  // namespace
+
+Command addBenchCommand(CLI::App& parent) {
+  auto args = std::make_shared<BenchArgs>();
+  Command cmd;
+  cmd.app = parent.add_subcommand("bench", "time several methods on the same frames, in one run");
+  addSceneOptions(cmd.app, args->scene);
+  cmd.app->add_option("--methods", args->methods, "all, or a comma-separated list of methods")
+      ->capture_default_str();
+  cmd.app->add_option("--frames", args->frames, "timed frames per method (1..1000000)")->capture_default_str();
+  cmd.app->add_option("--warmup", args->warmup, "untimed frames per method first (0..100000)")
+      ->capture_default_str();
+  cmd.app->add_option("--raytrace-budget", args->raytrace_budget_s,
+                      "seconds the CPU ray tracer may spend on its timed frames (at least 3 frames)")
+      ->capture_default_str();
+  addFrameOptions(cmd.app, args->frame);
+  cmd.app->add_option("--json", args->json, "output JSON file")->required();
+  addMethodParamOptions(cmd.app, args->params);
+  cmd.run = [args] { return runBench(*args); };
+  return cmd;
+}
+
+}  // namespace mirage::app

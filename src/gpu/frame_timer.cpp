@@ -1,0 +1,87 @@
+#include "gpu/frame_timer.h"
+
+#include "core/error.h"
+
+namespace mirage::gpu {
+
+const char* partName(Part part) {
+  switch (part) {
+    case Part::kUpdate: return "update";
+    case Part::kDirect: return "direct";
+    case Part::kReflect: return "reflect";
+  }
+  return "?";
+}
+
+Clock defaultClock(bool software_renderer) { return software_renderer ? Clock::kWall : Clock::kGpu; }
+
+const char* clockName(Clock clock) { return clock == Clock::kWall ? "wall+glFinish" : "gl-timestamp"; }
+
+void FrameTimer::mark(int part) {
+  Mark m{part, 0.0, 0};
+  if (clock_ == Clock::kWall) {
+    glFinish();
+    m.wall_ms = stopwatch_.ms();
+  } else {
+    GLuint id = 0;
+    glGenQueries(1, &id);
+    queries_.emplace_back(id);
+    glQueryCounter(id, GL_TIMESTAMP);
+    m.query = id;
+  }
+  current_.marks.push_back(m);
+}
+
+void FrameTimer::beginFrame() {
+  if (!current_.marks.empty()) throwRuntime("FrameTimer::beginFrame inside a frame");
+  mark(-1);
+}
+
+void FrameTimer::beginPart(Part part) {
+  if (current_.marks.empty()) throwRuntime("FrameTimer::beginPart outside a frame");
+  mark(int(part));
+}
+
+void FrameTimer::endFrame() {
+  if (current_.marks.empty()) throwRuntime("FrameTimer::endFrame outside a frame");
+  mark(kPartCount);
+  pending_.push_back(std::move(current_));
+  current_ = {};
+}
+
+void FrameTimer::shift(Part from, Part to, double ms) {
+  if (current_.marks.empty()) throwRuntime("FrameTimer::shift outside a frame");
+  current_.shift_ms[size_t(from)] -= ms;
+  current_.shift_ms[size_t(to)] += ms;
+}
+
+std::vector<FrameTimes> FrameTimer::takeResults() {
+  std::vector<FrameTimes> results;
+  for (auto& frame : pending_) {
+    const std::vector<Mark>& marks = frame.marks;
+    std::vector<double> t(marks.size());
+    for (size_t i = 0; i < marks.size(); ++i) {
+      if (clock_ == Clock::kWall) {
+        t[i] = marks[i].wall_ms;
+      } else {
+        GLuint64 ns = 0;
+        glGetQueryObjectui64v(marks[i].query, GL_QUERY_RESULT, &ns);
+        t[i] = double(ns) * 1e-6;
+      }
+    }
+    FrameTimes ft;
+    ft.total_ms = t.back() - t.front();
+    // Each interval belongs to the part whose mark opened it.
+    for (size_t i = 1; i < marks.size(); ++i) {
+      int part = marks[i - 1].part;
+      if (part >= 0 && part < kPartCount) ft.part_ms[size_t(part)] += t[i] - t[i - 1];
+    }
+    for (int p = 0; p < kPartCount; ++p) ft.part_ms[size_t(p)] += frame.shift_ms[size_t(p)];
+    results.push_back(ft);
+  }
+  pending_.clear();
+  queries_.clear();
+  return results;
+}
+
+}  // namespace mirage::gpu

@@ -1,0 +1,46 @@
+// GPU textures (DSA, immutable storage): 2D, 2D arrays, cube maps and cube-map arrays.
+#pragma once
+
+#include "core/math.h"
+#include "gpu/handle.h"
+
+namespace mirage::gpu {
+
+class Texture {
+ public:
+  Texture() = default;
+
+  static Texture create2D(GLenum internal_format, int width, int height, int levels = 1);
+  static Texture create2DArray(GLenum internal_format, int width, int height, int layers,
+                               int levels = 1);
+  static Texture createCube(GLenum internal_format, int size, int levels = 1);
+  static Texture createCubeArray(GLenum internal_format, int size, int cubes, int levels = 1);
+  // The number of levels of a full mip chain for the given largest side.
+  static int fullMipLevels(int size);
+
+  GLuint id() const { return handle_.id(); }
+  GLenum target() const { return target_; }
+  GLenum internalFormat() const { return format_; }
+  ivec2 size() const { return size_; }
+  int layers() const { return layers_; }
+  int levels() const { return levels_; }
+
+  // Uploads a level of a 2D texture.
+  void upload(int level, GLenum format, GLenum type, const void* pixels);
+  // Uploads one layer (array layer, cube face, or layer-face = 6 * cube + face) of a level.
+  void uploadLayer(int level, int layer, GLenum format, GLenum type, const void* pixels);
+  void generateMipmaps();
+  void setFilter(GLenum min_filter, GLenum mag_filter);
+  void setWrap(GLenum wrap);
+  void bind(GLuint unit) const { glBindTextureUnit(unit, id()); }
+
+ private:
+  Texture(GLenum target, GLenum format, ivec2 size, int layers, int levels);
+
+  Handle<TextureTraits> handle_;
+  GLenum target_ = 0, format_ = 0;
+  ivec2 size_{0};
+  int layers_ = 0, levels_ = 0;
+};
+
+}  // namespace mirage::gpu

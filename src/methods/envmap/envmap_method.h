@@ -1,0 +1,15 @@
+// Environment-mapped reflections, the baselines of the papers:
+//  - `envmap`: a cube map captured at each reflector's centre (traditional reflection mapping,
+//    what engines call a dynamic reflection probe), re-captured only when the scene changes;
+//    order K by K capture passes in which the other reflectors show the previous pass's probes;
+//  - `envmap-infinite`: the scene's distant environment only (a light probe at infinity).
+#pragma once
+
+#include "methods/method.h"
+
+namespace mirage {
+
+MethodEntry envmapMethodEntry();
+MethodEntry envmapInfiniteMethodEntry();
+
+}  // namespace mirage

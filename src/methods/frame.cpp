@@ -1,0 +1,47 @@
+#include "methods/frame.h"
+
+#include "core/error.h"
+
+namespace mirage {
+
+FrameRenderer::FrameRenderer(const Scene& scene, ivec2 size)
+    : scene_(scene),
+      environment_(EnvironmentMap::forScene(scene)),
+      gpu_(std::make_unique<GpuScene>(scene, environment_)),
+      passes_(std::make_unique<ScenePasses>(*gpu_)),
+      target_(size) {}
+
+std::unique_ptr<Method> FrameRenderer::createMethod(const std::string& name,
+                                                    const std::map<std::string, std::string>& given,
+                                                    const FrameSettings& settings) {
+  const MethodEntry& entry = findMethod(name);
+  std::map<std::string, std::string> own;
+  for (const ParamSpec& spec : entry.info.params)
+    if (auto it = given.find(spec.name); it != given.end()) own[spec.name] = it->second;
+  // Methods keep a reference to their parameters: store them as long as this renderer lives.
+  param_storage_.push_back(
+      std::make_unique<ParamValues>(ParamValues::validate(entry.info.params, own, name)));
+  MethodSetup setup{entry.info, *gpu_, *passes_, *param_storage_.back(), settings};
+  return entry.create(setup);
+}
+
+void FrameRenderer::render(Method& method, const View& view, float time,
+                           const FrameSettings& settings, gpu::FrameTimer* timer) {
+  if (view.size() != target_.size())
+    throwRuntime("view size {}x{} differs from the frame size {}x{}", view.size().x, view.size().y,
+                 target_.size().x, target_.size().y);
+  FrameContext frame{*gpu_, *passes_, target_, view, settings, timer};
+  if (timer) timer->beginFrame();
+  frame.beginPart(gpu::Part::kUpdate);
+  gpu_->setTime(time);
+  method.update(frame);
+  target_.bind();
+  target_.clear();
+  passes_->begin(view, settings);
+  method.render(frame);
+  if (timer) timer->endFrame();
+}
+
+RenderedFrame FrameRenderer::read() const { return {target_.readColor(), target_.readIds()}; }
+
+}  // namespace mirage

@@ -1,0 +1,49 @@
+// One scene ready to render on the GPU at a fixed image size: environment, GPU scene, shared
+// passes and the frame target. Renders frames with any method and reads them back.
+#pragma once
+
+#include <memory>
+
+#include "methods/method.h"
+#include "scene/environment.h"
+
+namespace mirage {
+
+struct RenderedFrame {
+  Image color;  // linear radiance; alpha is the distance from the eye
+  IdImage ids;  // reflector id per pixel (0 = none)
+};
+
+class FrameRenderer {
+ public:
+  // Needs a current OpenGL 4.5 context.
+  FrameRenderer(const Scene& scene, ivec2 size);
+
+  const Scene& scene() const { return scene_; }
+  ivec2 size() const { return target_.size(); }
+  GpuScene& gpu() { return *gpu_; }
+  ScenePasses& passes() { return *passes_; }
+  FrameTarget& target() { return target_; }
+  const EnvironmentMap& environment() const { return environment_; }
+
+  // Creates a method for this scene; `given` holds parameter values by name (other methods'
+  // parameters are ignored).
+  std::unique_ptr<Method> createMethod(const std::string& name,
+                                       const std::map<std::string, std::string>& given,
+                                       const FrameSettings& settings);
+
+  // Moves the scene to `time`, updates the method and renders one frame of `view`.
+  void render(Method& method, const View& view, float time, const FrameSettings& settings,
+              gpu::FrameTimer* timer = nullptr);
+  RenderedFrame read() const;
+
+ private:
+  const Scene& scene_;
+  EnvironmentMap environment_;
+  std::unique_ptr<GpuScene> gpu_;
+  std::unique_ptr<ScenePasses> passes_;
+  FrameTarget target_;
+  std::vector<std::unique_ptr<ParamValues>> param_storage_;
+};
+
+}  // namespace mirage

@@ -1,0 +1,88 @@
+// The interface every reflection method implements (DESIGN §2), and the registry through which
+// the tool, the viewer, the tests and the benchmarks find them. A method lives in its own folder
+// under src/methods/; nothing outside reaches into it except through this header.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/camera.h"
+#include "gpu/frame_timer.h"
+#include "methods/params.h"
+#include "render/frame_target.h"
+#include "render/gpu_scene.h"
+#include "render/scene_passes.h"
+
+namespace mirage {
+
+inline constexpr int kAnyOrder = 1 << 20;
+
+struct MethodInfo {
+  std::string name;
+  std::string description;
+  int max_order = kAnyOrder;   // the highest reflection order it can produce
+  bool gpu = true;             // false: renders on the CPU (the ray tracer)
+  std::vector<ParamSpec> params;
+};
+
+// What a method is created with: the scene on the GPU and its validated parameters.
+struct MethodSetup {
+  const MethodInfo& info;  // the registry's entry (lives as long as the program)
+  GpuScene& gpu;
+  ScenePasses& passes;
+  const ParamValues& params;
+  const FrameSettings& settings;
+};
+
+// What a method renders a frame with.
+struct FrameContext {
+  GpuScene& gpu;
+  ScenePasses& passes;
+  FrameTarget& target;
+  const View& view;
+  const FrameSettings& settings;
+  gpu::FrameTimer* timer = nullptr;  // null when not timing
+
+  void beginPart(gpu::Part part) const {
+    if (timer) timer->beginPart(part);
+  }
+};
+
+class Method {
+ public:
+  virtual ~Method() = default;
+
+  virtual const MethodInfo& info() const = 0;
+  // Brings captures and builds up to date with the scene at gpu.time(): rebuild only what
+  // changed since the last call (a camera move alone changes nothing a method captures).
+  virtual void update(FrameContext& frame) = 0;
+  // Draws the frame into frame.target (already bound and cleared): the direct part (timer part
+  // kDirect), then the reflections (kReflect).
+  virtual void render(FrameContext& frame) = 0;
+  // The reflection order this method produces when K is requested.
+  virtual int orderRendered(int requested) const { return std::min(requested, info().max_order); }
+  // Counters for reports and tests: captures made, structures built, ...
+  virtual std::map<std::string, double> stats() const { return {}; }
+};
+
+using MethodFactory = std::function<std::unique_ptr<Method>(const MethodSetup&)>;
+
+struct MethodEntry {
+  MethodInfo info;
+  MethodFactory create;
+};
+
+// Every method, in the order reports list them.
+const std::vector<MethodEntry>& methodRegistry();
+std::vector<std::string> methodNames();
+// The entry of `name`; throws InputError listing the allowed names.
+const MethodEntry& findMethod(const std::string& name);
+// "all" or a comma-separated list, each name checked.
+std::vector<std::string> parseMethodList(const std::string& list);
+// Every parameter of every method, once per name (for the command line and the viewer).
+std::vector<ParamSpec> allMethodParams();
+
+}  // namespace mirage

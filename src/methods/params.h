@@ -1,0 +1,53 @@
+// Method parameters: each method declares its parameters (name, type, range, default, help) so
+// that the command line, the viewer and the reports treat every method's knobs alike, and every
+// value is checked against its range with one message format.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace mirage {
+
+struct ParamSpec {
+  enum class Type { kInt, kFloat, kChoice };
+
+  std::string name;  // command-line name without dashes, e.g. "envmap-size"
+  Type type = Type::kInt;
+  double min = 0.0, max = 0.0;       // inclusive range (kInt, kFloat)
+  std::string default_value;         // as text
+  std::vector<std::string> choices;  // kChoice
+  std::string help;
+
+  static ParamSpec integer(std::string name, int min, int max, int def, std::string help);
+  static ParamSpec real(std::string name, double min, double max, double def, std::string help);
+  static ParamSpec choice(std::string name, std::vector<std::string> choices, std::string def,
+                          std::string help);
+  // "1..4096", "0..1e+06", "on|off".
+  std::string rangeText() const;
+};
+
+// Validated parameter values by name, with defaults filled in.
+class ParamValues {
+ public:
+  ParamValues() = default;
+  // Checks `given` (name -> text) against `specs`: unknown names, bad numbers and values out of
+  // range throw InputError naming the option and the allowed range.
+  static ParamValues validate(const std::vector<ParamSpec>& specs,
+                              const std::map<std::string, std::string>& given,
+                              const std::string& who);
+
+  int integer(const std::string& name) const;
+  double real(const std::string& name) const;
+  const std::string& text(const std::string& name) const;
+  bool has(const std::string& name) const { return values_.count(name) != 0; }
+  const std::map<std::string, std::string>& all() const { return values_; }
+
+ private:
+  std::map<std::string, std::string> values_;
+};
+
+// Checks one value against its spec; throws InputError("--name ...") on failure.
+void checkParam(const ParamSpec& spec, const std::string& value);
+
+}  // namespace mirage

@@ -1,0 +1,125 @@
+#include "render/gpu_scene.h"
+
+#include <cstddef>
+
+#include "shading/gpu_types.h"
+
+namespace mirage {
+
+namespace {
+
+struct Vertex {
+  vec3 position;
+  vec3 normal;
+  vec2 uv;
+  vec4 tangent;
+};
+static_assert(sizeof(Vertex) == 48, "vertex layout");
+
+}  // namespace
+
+GpuScene::GpuScene(const Scene& scene, const EnvironmentMap& environment)
+    : scene_(scene), environment_map_(environment) {
+  for (const Mesh& mesh : scene.meshes) {
+    std::vector<Vertex> vertices(mesh.positions.size());
+    for (size_t i = 0; i < vertices.size(); ++i) {
+      vertices[i].position = mesh.positions[i];
+      vertices[i].normal = i < mesh.normals.size() ? mesh.normals[i] : vec3(0, 1, 0);
+      vertices[i].uv = i < mesh.uvs.size() ? mesh.uvs[i] : vec2(0.0f);
+      vertices[i].tangent = i < mesh.tangents.size() ? mesh.tangents[i] : vec4(1, 0, 0, 1);
+    }
+    GpuMesh g;
+    g.vertices = gpu::Buffer::fromSpan<Vertex>(vertices);
+    g.indices = gpu::Buffer::fromSpan<uvec3>(mesh.triangles);
+    g.index_count = GLsizei(mesh.triangles.size() * 3);
+    GLuint vao = 0;
+    glCreateVertexArrays(1, &vao);
+    g.vao = gpu::Handle<gpu::VertexArrayTraits>(vao);
+    glVertexArrayVertexBuffer(vao, 0, g.vertices.id(), 0, sizeof(Vertex));
+    glVertexArrayElementBuffer(vao, g.indices.id());
+    const GLuint offsets[] = {offsetof(Vertex, position), offsetof(Vertex, normal),
+                              offsetof(Vertex, uv), offsetof(Vertex, tangent)};
+    const GLint sizes[] = {3, 3, 2, 4};
+    for (GLuint a = 0; a < 4; ++a) {
+      glEnableVertexArrayAttrib(vao, a);
+      glVertexArrayAttribFormat(vao, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
+      glVertexArrayAttribBinding(vao, a, 0);
+    }
+    meshes_.push_back(std::move(g));
+  }
+
+  for (const TextureImage& t : scene.textures) {
+    int levels = gpu::Texture::fullMipLevels(std::max(t.image.width(), t.image.height()));
+    gpu::Texture tex = gpu::Texture::create2D(GL_RGBA16F, t.image.width(), t.image.height(), levels);
+    tex.upload(0, GL_RGBA, GL_FLOAT, t.image.data());
+    tex.generateMipmaps();
+    tex.setWrap(GL_REPEAT);
+    textures_.push_back(std::move(tex));
+  }
+
+  int size = environment.faceSize();
+  environment_ = gpu::Texture::createCube(GL_RGBA16F, size, gpu::Texture::fullMipLevels(size));
+  for (int f = 0; f < 6; ++f)
+    environment_.uploadLayer(0, f, GL_RGBA, GL_FLOAT, environment.face(f).data());
+  environment_.generateMipmaps();
+  glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+
+  std::vector<shading::MaterialData> materials;
+  for (const Material& m : scene.materials) materials.push_back(m.gpuData());
+  material_buffer_ = gpu::Buffer::fromSpan<shading::MaterialData>(materials);
+  matrices_.assign(scene.instances.size(), mat4(1.0f));
+  setTime(0.0f);
+}
+
+void GpuScene::setTime(float time) {
+  if (time == time_) return;
+  bool changed = false;
+  for (size_t i = 0; i < scene_.instances.size(); ++i) {
+    mat4 m = scene_.instances[i].matrixAt(time);
+    if (m != matrices_[i] || time_ < 0.0f) changed = true;
+    matrices_[i] = m;
+  }
+  time_ = time;
+  if (changed) {
+    uploadInstances();
+    ++version_;
+  }
+}
+
+void GpuScene::uploadInstances() {
+  std::vector<shading::InstanceData> data(scene_.instances.size());
+  std::vector<int> reflectors = scene_.reflectorInstances();
+  for (size_t i = 0; i < data.size(); ++i) {
+    const Instance& inst = scene_.instances[i];
+    data[i].model = matrices_[i];
+    data[i].normal_matrix = mat4(normalMatrix(matrices_[i]));
+    auto it = std::find(reflectors.begin(), reflectors.end(), int(i));
+    int reflector_id = it == reflectors.end() ? 0 : int(it - reflectors.begin()) + 1;
+    data[i].ids = ivec4(inst.material, reflector_id, inst.mesh, 0);
+  }
+  instance_buffer_.upload(std::span<const shading::InstanceData>(data));
+}
+
+Bounds3 GpuScene::instanceBounds(int instance) const {
+  const Instance& inst = scene_.instances[size_t(instance)];
+  return scene_.meshes[size_t(inst.mesh)].bounds().transformed(matrices_[size_t(instance)]);
+}
+
+void GpuScene::bindShared() const {
+  instance_buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_INSTANCES);
+  material_buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_MATERIALS);
+  environment_.bind(MIRAGE_UNIT_ENVIRONMENT);
+}
+
+void GpuScene::draw(int instance) const {
+  const Instance& inst = scene_.instances[size_t(instance)];
+  const Material& material = scene_.materials[size_t(inst.material)];
+  if (material.albedo_texture >= 0) textures_[size_t(material.albedo_texture)].bind(MIRAGE_UNIT_ALBEDO);
+  if (material.normal_map >= 0) textures_[size_t(material.normal_map)].bind(MIRAGE_UNIT_NORMAL_MAP);
+  glUniform1i(0, instance);  // layout(location = 0) uniform int u_instance
+  const GpuMesh& mesh = meshes_[size_t(inst.mesh)];
+  glBindVertexArray(mesh.vao.id());
+  glDrawElements(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr);
+}
+
+}  // namespace mirage

@@ -1,0 +1,34 @@
+// Fragment-side inputs of a scene surface and the lookups of its material's textures.
+#include "render/shaders/common.glsl"
+
+in SurfaceData {
+  vec3 world_position;
+  vec3 normal;
+  vec2 uv;
+  vec4 tangent;
+  flat int instance;
+  flat ivec4 ids;  // material, reflector id, albedo texture, normal map (see scene.vert)
+} v_in;
+
+layout(binding = MIRAGE_UNIT_ALBEDO) uniform sampler2D u_albedo;
+layout(binding = MIRAGE_UNIT_NORMAL_MAP) uniform sampler2D u_normal_map;
+
+layout(location = 0) out vec4 out_color;  // rgb: linear radiance; a: distance from the eye
+layout(location = 1) out uint out_id;     // reflector id, 0 for everything else
+
+MaterialData surface_material() { return materials[v_in.ids.x]; }
+
+vec3 surface_albedo(MaterialData m) {
+  vec3 albedo = material_albedo(m, v_in.uv);
+  if (v_in.ids.z >= 0) albedo *= texture(u_albedo, v_in.uv).rgb;
+  return albedo;
+}
+
+// The interpolated normal, perturbed by the material's normal map if it has one.
+vec3 surface_normal() {
+  vec3 n = normalize(v_in.normal);
+  if (v_in.ids.w >= 0) n = perturb_normal(n, v_in.tangent, texture(u_normal_map, v_in.uv).rgb);
+  return n;
+}
+
+float eye_distance() { return length(v_in.world_position - frame.eye.xyz); }

@@ -1,0 +1,198 @@
+#include "scene/builtin_scenes.h"
+
+#include "core/error.h"
+#include "scene/procedural.h"
+
+namespace mirage {
+
+namespace {
+
+const vec3 kCheckerLight{0.85f, 0.85f, 0.82f};
+const vec3 kCheckerDark{0.10f, 0.10f, 0.12f};
+
+quat rotationX(float degrees) { return glm::angleAxis(radians(degrees), vec3(1, 0, 0)); }
+quat rotationY(float degrees) { return glm::angleAxis(radians(degrees), vec3(0, 1, 0)); }
+
+// A checkerboard floor of `size` units with one-unit cells, at y = 0.
+void addCheckerFloor(Scene& s, float size) {
+  int mesh = addMesh(s, procedural::quad(size, size, 1.0f));
+  int mat = addMaterial(s, Material::checker("checker", kCheckerLight, kCheckerDark, 1.0f));
+  addInstance(s, "floor", mesh, mat, {});
+}
+
+void addBox(Scene& s, const char* name, vec3 center, vec3 half, vec3 color, float yaw = 0.0f) {
+  int mesh = addMesh(s, procedural::box(half));
+  int mat = addMaterial(s, Material::diffuse(name, color));
+  addInstance(s, name, mesh, mat, placeAt(center, vec3(1.0f), rotationY(yaw)));
+}
+
+Scene sphereOverChecker() {
+  Scene s;
+  s.description = "one mirror sphere over a checkerboard floor with coloured boxes around it";
+  addCheckerFloor(s, 16.0f);
+  addBox(s, "red-box", {2.6f, 0.5f, 0.8f}, vec3(0.5f), {0.85f, 0.18f, 0.12f}, 20.0f);
+  addBox(s, "green-box", {-2.4f, 0.35f, 1.2f}, vec3(0.35f), {0.2f, 0.7f, 0.25f}, -15.0f);
+  addBox(s, "blue-box", {0.6f, 0.75f, -2.6f}, {0.4f, 0.75f, 0.4f}, {0.15f, 0.3f, 0.85f}, 35.0f);
+  addBox(s, "yellow-box", {-1.6f, 0.3f, -1.9f}, vec3(0.3f), {0.9f, 0.8f, 0.15f}, 10.0f);
+  int sphere = addMesh(s, procedural::sphere(1.0f, 128, 64));
+  int mirror = addMaterial(s, Material::mirror("mirror"));
+  addInstance(s, "mirror-sphere", sphere, mirror, placeAt({0.0f, 1.25f, 0.0f}));
+  CameraDesc cam;
+  cam.name = "main";
+  cam.position = {0.0f, 2.6f, 6.5f};
+  cam.target = {0.0f, 1.0f, 0.0f};
+  cam.fov_y_degrees = 45.0f;
+  s.cameras.push_back(cam);
+  return s;
+}
+
+Scene spheres9(const SceneOptions& options) {
+  int count = options.reflectors < 0 ? 9 : options.reflectors;
+  if (count < 1 || count > 9)
+    throwInput("spheres9: --reflectors {} is outside the allowed range 1..9", options.reflectors);
+  Scene s;
+  s.description = "a 3x3 grid of mirror spheres among diffuse objects (--reflectors N keeps N)";
+  addCheckerFloor(s, 24.0f);
+  // Diffuse objects between and around the spheres.
+  addBox(s, "red-box", {-1.1f, 0.3f, -1.1f}, vec3(0.3f), {0.85f, 0.18f, 0.12f}, 30.0f);
+  addBox(s, "green-box", {1.1f, 0.3f, 1.1f}, vec3(0.3f), {0.2f, 0.7f, 0.25f}, -20.0f);
+  addBox(s, "blue-box", {1.1f, 0.45f, -1.1f}, {0.25f, 0.45f, 0.25f}, {0.15f, 0.3f, 0.85f}, 10.0f);
+  addBox(s, "yellow-box", {-1.1f, 0.25f, 1.1f}, vec3(0.25f), {0.9f, 0.8f, 0.15f}, 45.0f);
+  int column = addMesh(s, procedural::cylinder(0.25f, 1.6f));
+  int orange = addMaterial(s, Material::diffuse("orange", {0.95f, 0.5f, 0.1f}));
+  addInstance(s, "column", column, orange, placeAt({-3.6f, 0.0f, -0.4f}));
+  int teapot = addMesh(s, procedural::teapotLike());
+  int purple = addMaterial(s, Material::diffuse("purple", {0.55f, 0.25f, 0.7f}));
+  addInstance(s, "teapot", teapot, purple, placeAt({3.5f, 0.0f, 0.6f}, vec3(1.2f), rotationY(200)));
+  int sphere = addMesh(s, procedural::sphere(0.7f, 96, 48));
+  int mirror = addMaterial(s, Material::mirror("mirror"));
+  // Front row first, as the reflectors are enabled one by one.
+  int n = 0;
+  for (int row = 2; row >= 0 && n < count; --row)
+    for (int col = 0; col < 3 && n < count; ++col, ++n)
+      addInstance(s, fmt::format("mirror-sphere-{}", n + 1), sphere, mirror,
+                  placeAt({2.2f * float(col - 1), 0.7f, 2.2f * float(row - 1)}));
+  CameraDesc cam;
+  cam.name = "main";
+  cam.position = {0.0f, 5.2f, 8.6f};
+  cam.target = {0.0f, 0.4f, 0.0f};
+  cam.fov_y_degrees = 45.0f;
+  s.cameras.push_back(cam);
+  return s;
+}
+
+Scene mirrorRoom() {
+  Scene s;
+  s.description = "a checkerboard room with one planar wall mirror, a teapot-like object on an "
+                  "inverted pyramid and a box";
+  int room = addMesh(s, procedural::box({4.0f, 2.0f, 4.0f}, true));
+  int walls = addMaterial(s, Material::checker("walls", kCheckerLight, {0.25f, 0.35f, 0.6f}, 1.0f));
+  addInstance(s, "room", room, walls, placeAt({0.0f, 2.0f, 0.0f}));
+  int mirror_mesh = addMesh(s, procedural::quad(4.4f, 2.4f));
+  int mirror = addMaterial(s, Material::mirror("wall-mirror", vec3(0.05f)));
+  addInstance(s, "wall-mirror", mirror_mesh, mirror,
+              placeAt({-0.6f, 1.9f, -3.97f}, vec3(1.0f), rotationX(90.0f)));
+  int pyramid = addMesh(s, procedural::pyramid(0.45f, 1.0f, true));
+  int stone = addMaterial(s, Material::diffuse("stone", {0.75f, 0.72f, 0.65f}));
+  addInstance(s, "pyramid", pyramid, stone, placeAt({0.2f, 0.0f, -1.0f}));
+  int teapot = addMesh(s, procedural::teapotLike());
+  int red = addMaterial(s, Material::diffuse("red", {0.85f, 0.2f, 0.15f}));
+  addInstance(s, "teapot", teapot, red, placeAt({0.2f, 1.0f, -1.0f}, vec3(0.8f), rotationY(-30)));
+  addBox(s, "green-box", {-2.2f, 0.4f, -0.2f}, vec3(0.4f), {0.2f, 0.7f, 0.25f}, 25.0f);
+  CameraDesc cam;
+  cam.name = "main";
+  cam.position = {2.4f, 2.1f, 3.4f};
+  cam.target = {-0.6f, 1.3f, -2.0f};
+  cam.fov_y_degrees = 55.0f;
+  s.cameras.push_back(cam);
+  return s;
+}
+
+Scene twoMirrors() {
+  Scene s;
+  s.description = "two facing planar mirrors with objects between them (reflections of every order)";
+  addCheckerFloor(s, 16.0f);
+  int mirror_mesh = addMesh(s, procedural::quad(5.0f, 2.6f));
+  int mirror = addMaterial(s, Material::mirror("mirror", vec3(0.05f), vec3(0.95f)));
+  // Quads face +Y; rotate them upright to face each other across x = 0.
+  quat face_plus_x = glm::angleAxis(radians(-90.0f), vec3(0, 0, 1)) * rotationY(90.0f);
+  quat face_minus_x = glm::angleAxis(radians(90.0f), vec3(0, 0, 1)) * rotationY(90.0f);
+  addInstance(s, "mirror-left", mirror_mesh, mirror, placeAt({-3.0f, 1.4f, 0.0f}, vec3(1), face_plus_x));
+  addInstance(s, "mirror-right", mirror_mesh, mirror, placeAt({3.0f, 1.4f, 0.0f}, vec3(1), face_minus_x));
+  addBox(s, "red-box", {0.0f, 0.4f, 0.0f}, vec3(0.4f), {0.85f, 0.18f, 0.12f}, 20.0f);
+  int sphere = addMesh(s, procedural::sphere(0.35f, 48, 24));
+  int blue = addMaterial(s, Material::diffuse("blue", {0.15f, 0.3f, 0.85f}));
+  addInstance(s, "blue-sphere", sphere, blue, placeAt({0.9f, 0.35f, -0.8f}));
+  int column = addMesh(s, procedural::cylinder(0.2f, 1.4f));
+  int yellow = addMaterial(s, Material::diffuse("yellow", {0.9f, 0.8f, 0.15f}));
+  addInstance(s, "column", column, yellow, placeAt({-1.0f, 0.0f, 0.7f}));
+  CameraDesc cam;
+  cam.name = "main";
+  cam.position = {1.6f, 1.7f, 4.2f};
+  cam.target = {-3.0f, 1.2f, -0.4f};
+  cam.fov_y_degrees = 50.0f;
+  s.cameras.push_back(cam);
+  return s;
+}
+
+}  // namespace
+
+int addMesh(Scene& scene, Mesh mesh) {
+  scene.meshes.push_back(std::move(mesh));
+  return int(scene.meshes.size()) - 1;
+}
+
+int addMaterial(Scene& scene, Material material) {
+  scene.materials.push_back(std::move(material));
+  return int(scene.materials.size()) - 1;
+}
+
+int addInstance(Scene& scene, std::string name, int mesh, int material, const Transform& transform) {
+  Instance inst;
+  inst.name = std::move(name);
+  inst.mesh = mesh;
+  inst.material = material;
+  inst.transform = transform;
+  scene.instances.push_back(std::move(inst));
+  return int(scene.instances.size()) - 1;
+}
+
+Transform placeAt(vec3 translation, vec3 scale, quat rotation) {
+  Transform t;
+  t.translation = translation;
+  t.scale = scale;
+  t.rotation = rotation;
+  return t;
+}
+
+const std::vector<BuiltinSceneInfo>& builtinScenes() {
+  static const std::vector<BuiltinSceneInfo> scenes = [] {
+    std::vector<BuiltinSceneInfo> v;
+    for (const char* name : {"sphere-over-checker", "spheres9", "mirror-room", "two-mirrors"})
+      v.push_back({name, makeBuiltinScene(name).description});
+    return v;
+  }();
+  return scenes;
+}
+
+bool isBuiltinScene(const std::string& name) {
+  return name == "sphere-over-checker" || name == "spheres9" || name == "mirror-room" ||
+         name == "two-mirrors";
+}
+
+Scene makeBuiltinScene(const std::string& name, const SceneOptions& options) {
+  Scene s;
+  if (name == "sphere-over-checker") s = sphereOverChecker();
+  else if (name == "spheres9") s = spheres9(options);
+  else if (name == "mirror-room") s = mirrorRoom();
+  else if (name == "two-mirrors") s = twoMirrors();
+  else throwInput("unknown built-in scene '{}'", name);
+  if (options.reflectors >= 0 && name != "spheres9")
+    throwInput("--reflectors applies to spheres9 only, not to '{}'", name);
+  s.name = name;
+  s.source = "builtin:" + name;
+  s.validate();
+  return s;
+}
+
+}  // namespace mirage

@@ -1,0 +1,36 @@
+// Triangle meshes as loaded or generated: positions, smooth normals, optional texture
+// coordinates and tangents (for normal maps), 32-bit triangle indices.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/bounds.h"
+#include "core/math.h"
+
+namespace mirage {
+
+struct Mesh {
+  std::string name;    // for messages and reports
+  std::string source;  // the file it came from, or "builtin:<generator>"
+  std::vector<vec3> positions;
+  std::vector<vec3> normals;   // one per position, unit length
+  std::vector<vec2> uvs;       // empty, or one per position
+  std::vector<vec4> tangents;  // empty, or one per position (w: bitangent sign)
+  std::vector<uvec3> triangles;
+
+  size_t vertexCount() const { return positions.size(); }
+  size_t triangleCount() const { return triangles.size(); }
+  Bounds3 bounds() const;
+
+  // Area-weighted smooth vertex normals (replaces any normals).
+  void computeNormals();
+  // Per-vertex tangents from the texture coordinates (needs uvs and normals).
+  void computeTangents();
+  // Checks indices, attribute counts and finiteness; throws InputError naming the mesh.
+  void validate() const;
+  // Applies an affine transform to positions, normals and tangents.
+  void transform(const mat4& m);
+};
+
+}  // namespace mirage

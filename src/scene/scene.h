@@ -1,0 +1,83 @@
+// A scene: meshes, materials, textures, instances (with transforms and keyframed animation),
+// cameras, one directional light plus ambient, and the distant environment.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/bounds.h"
+#include "core/camera.h"
+#include "core/image.h"
+#include "scene/animation.h"
+#include "scene/material.h"
+#include "scene/mesh.h"
+
+namespace mirage {
+
+struct Light {
+  vec3 direction = glm::normalize(vec3(0.45f, 1.0f, 0.35f));  // unit, towards the light
+  vec3 color{0.95f, 0.93f, 0.88f};
+  vec3 ambient{0.25f, 0.27f, 0.30f};
+};
+
+struct EnvironmentDesc {
+  std::string image;             // equirectangular HDR/EXR/PNG; empty: procedural sky
+  float intensity = 1.0f;        // radiance scale
+  float rotation_degrees = 0.0f; // about +Y
+  float clamp = 0.0f;            // > 0: clamp radiance (tames HDR suns); 0: off
+  int cube_size = 0;             // cube-map face size; 0: automatic
+};
+
+struct TextureImage {
+  std::string name;  // path or embedded name, for messages
+  Image image;       // linear values (sRGB textures are decoded on load)
+  bool srgb = true;
+};
+
+struct Instance {
+  std::string name;
+  int mesh = -1;
+  int material = -1;
+  Transform transform;  // used when there is no animation
+  Animation animation;  // keyframed transforms, overriding `transform`
+
+  mat4 matrixAt(float time) const {
+    return animation.empty() ? transform.matrix() : animation.at(time).matrix();
+  }
+};
+
+struct Scene {
+  std::string name;
+  std::string source;  // the file it came from, or "builtin"
+  std::string description;
+  std::vector<Mesh> meshes;
+  std::vector<Material> materials;
+  std::vector<TextureImage> textures;
+  std::vector<Instance> instances;
+  std::vector<CameraDesc> cameras;  // at least one after validation
+  Light light;
+  EnvironmentDesc environment;
+
+  bool isReflector(int instance) const {
+    return materials[size_t(instances[size_t(instance)].material)].isReflector();
+  }
+  // Instances with reflector materials, in scene order; reflector id = position + 1.
+  std::vector<int> reflectorInstances() const;
+  size_t triangleCount() const;
+  // World bounds of all instances at `time`.
+  Bounds3 bounds(float time = 0.0f) const;
+  Bounds3 instanceBounds(int instance, float time = 0.0f) const;
+  // The camera with this name (empty: the first); throws InputError listing the names.
+  const CameraDesc& camera(const std::string& name = "") const;
+  // Animation length in seconds (0 for a static scene).
+  float duration() const;
+  bool animated() const { return duration() > 0.0f; }
+
+  // Checks references, ranges and meshes; throws InputError naming the scene and the field.
+  void validate() const;
+  // Adds a camera framing the scene if none is given.
+  void ensureCamera();
+};
+
+}  // namespace mirage

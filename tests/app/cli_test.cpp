@@ -1,0 +1,136 @@
+// The command-line contract: bad input exits with 2 and one message naming the problem and the
+// allowed values; no OpenGL driver exits with 3; good input writes its files.
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "support/gl_test.h"
+
+namespace mirage::test {
+namespace {
+
+struct Result {
+  int code = -1;
+  std::string output;  // stdout and stderr together
+};
+
+Result run(const std::string& args, const std::string& env = "") {
+  std::string command = env + " " + MIRAGE_BINARY + " " + args + " 2>&1";
+  Result r;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return r;
+  std::array<char, 4096> buffer{};
+  while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) r.output.append(buffer.data(), n);
+  int status = pclose(pipe);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::filesystem::path tempDir(const std::string& name) {
+  auto dir = std::filesystem::temp_directory_path() / ("mirage-cli-" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+struct BadInput {
+  std::string args;
+  std::string expected;  // a piece of the message
+};
+
+void PrintTo(const BadInput& b, std::ostream* os) { *os << "mirage " << b.args; }
+
+class CliBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(CliBadInput, ExitsWithTwoAndSaysWhy) {
+  Result r = run(GetParam().args);
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find(GetParam().expected), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("internal error"), std::string::npos) << r.output;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cli, CliBadInput,
+    ::testing::Values(
+        BadInput{"render --scene sphere-over-checker --method nope -o x.png", "allowed: none"},
+        BadInput{"render --scene no-such-scene --method envmap -o x.png", "no such scene"},
+        BadInput{"render --scene sphere-over-checker --method envmap --size 0x10 -o x.png", "1..16384"},
+        BadInput{"render --scene sphere-over-checker --method envmap --size banana -o x.png", "WxH"},
+        BadInput{"render --scene sphere-over-checker --method envmap --order 99 -o x.png", "0..16"},
+        BadInput{"render --scene sphere-over-checker --method envmap -o x.bmp", ".png, .exr"},
+        BadInput{"render --scene sphere-over-checker --method envmap --envmap-size 0 -o x.png", "8..2048"},
+        BadInput{"render --scene sphere-over-checker --method raytrace --spp 0 -o x.png", "1..4096"},
+        BadInput{"render --scene spheres9 --reflectors 12 --method envmap -o x.png", "1..9"},
+        BadInput{"render --scene sphere-over-checker --method envmap --tonemap x -o x.png", "aces"},
+        BadInput{"render --scene sphere-over-checker --method envmap --mip maybe -o x.png", "on|off"},
+        BadInput{"render --scene sphere-over-checker --method envmap --camera nope -o x.png", "no camera"},
+        BadInput{"render --method envmap -o x.png", "--scene"},
+        BadInput{"render --scene sphere-over-checker --method envmap --bogus 1 -o x.png", "bogus"},
+        BadInput{"compare --scene sphere-over-checker --methods envmap,,none -o d", "empty method"},
+        BadInput{"compare --scene sphere-over-checker --methods envmap,nope -o d", "unknown method 'nope'"},
+        BadInput{"bench --scene sphere-over-checker --frames 0 --json b.json", "1..1000000"},
+        BadInput{"frobnicate", "frobnicate"}));
+
+TEST(Cli, HelpExitsZero) {
+  for (const char* cmd : {"--help", "scenes --help", "render --help", "compare --help", "bench --help"}) {
+    Result r = run(cmd);
+    EXPECT_EQ(r.code, 0) << cmd << "\n" << r.output;
+    EXPECT_NE(r.output.find("Usage"), std::string::npos) << cmd;
+  }
+}
+
+TEST(Cli, ScenesListsTheBuiltInScenesOnStdout) {
+  Result r = run("scenes 2>/dev/null");
+  EXPECT_EQ(r.code, 0);
+  for (const char* s : {"sphere-over-checker\n", "spheres9\n", "mirror-room\n", "two-mirrors\n"})
+    EXPECT_NE(r.output.find(s), std::string::npos) << r.output;
+}
+
+TEST(Cli, NoOpenGLDriverExitsWithThree) {
+  auto dir = tempDir("nogl");
+  Result r = run("render --scene sphere-over-checker --method envmap -o " + (dir / "x.png").string(),
+                 "MIRAGE_NO_GL=1");
+  EXPECT_EQ(r.code, 3) << r.output;
+  EXPECT_NE(r.output.find("OpenGL 4.5"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
+}
+
+class CliWithGl : public GlTest {};
+
+TEST_F(CliWithGl, RenderWritesPngAndExr) {
+  auto dir = tempDir("render");
+  for (const char* ext : {".png", ".exr"}) {
+    auto out = dir / (std::string("img") + ext);
+    Result r = run("render --scene sphere-over-checker --method envmap --size 96x64 -o " + out.string());
+    EXPECT_EQ(r.code, 0) << r.output;
+    EXPECT_GT(std::filesystem::file_size(out), 100u);
+  }
+  // Nothing but the outputs is left behind (temporary files are renamed or removed).
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) files += entry.is_regular_file();
+  EXPECT_EQ(files, 2);
+}
+
+TEST_F(CliWithGl, CompareWritesTheReport) {
+  auto dir = tempDir("compare");
+  Result r = run("compare --scene sphere-over-checker --methods all --size 120x86 -o " + dir.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  for (const char* f : {"index.html", "metrics.json", "raytrace.png", "envmap.png", "envmap.err.png",
+                        "none.png", "envmap-infinite.png"})
+    EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
+}
+
+TEST_F(CliWithGl, BenchWritesJson) {
+  auto dir = tempDir("bench");
+  auto json = dir / "b.json";
+  Result r = run("bench --scene sphere-over-checker --methods none,envmap,raytrace --frames 3 "
+                 "--warmup 1 --size 96x64 --json " + json.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(json));
+}
+
+}  // namespace
+}  // namespace mirage::test

@@ -1,0 +1,131 @@
+// Image tests of the baseline methods against the ray tracer, with stated tolerances. On failure
+// the actual/expected/diff images are written under build/<preset>/test-artifacts/.
+#include <gtest/gtest.h>
+
+#include "core/display.h"
+#include "methods/frame.h"
+#include "raytrace/tracer.h"
+#include "support/gl_test.h"
+#include "support/image_check.h"
+#include "support/scenes.h"
+
+namespace mirage::test {
+namespace {
+
+class BaselineImages : public GlTest {};
+
+struct Pair {
+  Image gpu, cpu;
+  IdImage gpu_ids, cpu_ids;
+};
+
+// Renders `method` on the GPU and the ray tracer at the same order; both display-encoded.
+Pair renderBoth(const Scene& scene, const std::string& method, ivec2 size, FrameSettings settings) {
+  FrameRenderer renderer(scene, size);
+  View view(scene.camera(), size);
+  auto m = renderer.createMethod(method, {}, settings);
+  renderer.render(*m, view, 0.0f, settings);
+  RenderedFrame frame = renderer.read();
+  RayTracer tracer(scene, renderer.environment());
+  tracer.prepare(0.0f);
+  TraceResult truth = tracer.render(view, {settings.order, 1});
+  DisplaySettings display{1.0f, ToneMap::kAces};
+  return {toDisplay(frame.color, display), toDisplay(truth.color, display), frame.ids, truth.ids};
+}
+
+TEST_F(BaselineImages, EnvmapInfiniteEqualsRaytraceWithoutLocalObjects) {
+  Scene scene = mirrorSphereInSky();
+  FrameSettings settings;
+  settings.order = 1;
+  settings.mip = false;  // the ray tracer samples level 0
+  Pair p = renderBoth(scene, "envmap-infinite", {256, 192}, settings);
+  // Same rasterised coverage as the traced coverage, but for a few silhouette pixels.
+  IdImage both(p.cpu_ids.width(), p.cpu_ids.height());
+  size_t differ = 0;
+  for (size_t i = 0; i < both.pixelCount(); ++i) {
+    differ += p.gpu_ids.data()[i] != p.cpu_ids.data()[i];
+    both.data()[i] = p.gpu_ids.data()[i] == p.cpu_ids.data()[i] ? p.cpu_ids.data()[i] : 0u;
+  }
+  EXPECT_LT(differ, 40u);
+  EXPECT_GT(countNonZero(both), 10000u);
+  // Where both see the sphere, the reflections agree to within rounding, except at grazing
+  // silhouette pixels where the reflected direction swings fastest (a handful).
+  EXPECT_TRUE(mostPixelsWithin(p.gpu, p.cpu, 2.0f / 255.0f, 0.001, &both, "reflector-within"));
+  EXPECT_TRUE(psnrAtLeast(p.gpu, p.cpu, 40.0, &both, "reflector"));
+  EXPECT_TRUE(psnrAtLeast(p.gpu, p.cpu, 40.0, nullptr, "all"));
+}
+
+TEST_F(BaselineImages, GpuShadingEqualsCpuShading) {
+  // `none` on the GPU and the ray tracer at order 0 run the same shading code (shading/*.h):
+  // they differ only where rasterisation and ray casting disagree on coverage at edges.
+  Scene scene = makeBuiltinScene("sphere-over-checker");
+  FrameSettings settings;
+  settings.order = 0;
+  Pair p = renderBoth(scene, "none", {360, 256}, settings);
+  EXPECT_TRUE(mostPixelsWithin(p.gpu, p.cpu, 2.0f / 255.0f, 0.01, nullptr, "none-vs-order0"));
+  EXPECT_TRUE(psnrAtLeast(p.gpu, p.cpu, 35.0, nullptr, "none-vs-order0"));
+}
+
+TEST_F(BaselineImages, EnvmapApproximatesRaytraceOnSphereOverChecker) {
+  // A reflection probe ignores parallax: it must resemble the truth without equalling it.
+  Scene scene = makeBuiltinScene("sphere-over-checker");
+  FrameSettings settings;
+  settings.order = 1;
+  Pair p = renderBoth(scene, "envmap", {360, 256}, settings);
+  // Measured: about 12.7 dB on reflector pixels at 360x256 (the checker is shifted by the
+  // missing parallax); an orientation or capture error drops it below 9 dB.
+  EXPECT_TRUE(psnrAtLeast(p.gpu, p.cpu, 11.0, &p.cpu_ids, "envmap-reflector"));
+  double psnr = psnrFromMse(meanSquaredError(p.gpu, p.cpu, &p.cpu_ids));
+  EXPECT_LT(psnr, 40.0) << "a probe cannot reproduce the parallax of a nearby floor exactly";
+}
+
+TEST_F(BaselineImages, HigherOrderChangesOnlyReflectorPixels) {
+  Scene scene = makeBuiltinScene("two-mirrors");
+  FrameSettings one, three;
+  one.order = 1;
+  three.order = 3;
+  ivec2 size{240, 160};
+  FrameRenderer renderer(scene, size);
+  View view(scene.camera(), size);
+  for (const char* method : {"envmap", "raytrace"}) {
+    auto a = renderer.createMethod(method, {}, one);
+    renderer.render(*a, view, 0.0f, one);
+    RenderedFrame fa = renderer.read();
+    auto b = renderer.createMethod(method, {}, three);
+    renderer.render(*b, view, 0.0f, three);
+    RenderedFrame fb = renderer.read();
+    size_t changed_reflector = 0, changed_other = 0;
+    for (size_t i = 0; i < fa.color.pixelCount(); ++i) {
+      bool changed = glm::any(glm::greaterThan(glm::abs(vec3(fa.color.data()[i]) - vec3(fb.color.data()[i])), vec3(1e-5f)));
+      if (!changed) continue;
+      (fa.ids.data()[i] != 0 ? changed_reflector : changed_other)++;
+    }
+    EXPECT_EQ(changed_other, 0u) << method;
+    EXPECT_GT(changed_reflector, 100u) << method << ": mirror-in-mirror paths must appear at order 3";
+  }
+}
+
+TEST_F(BaselineImages, EnvmapRecapturesOnlyWhenTheSceneChanges) {
+  Scene scene = makeBuiltinScene("sphere-over-checker");
+  // Animate one box so that time changes the scene.
+  Instance& box = scene.instances[1];
+  box.animation.keys = {{0.0f, box.transform}, {1.0f, box.transform}};
+  box.animation.keys[1].transform.translation.x += 1.0f;
+  ivec2 size{64, 48};
+  FrameRenderer renderer(scene, size);
+  FrameSettings settings;
+  auto m = renderer.createMethod("envmap", {}, settings);
+  CameraDesc cam = scene.camera();
+  renderer.render(*m, View(cam, size), 0.0f, settings);
+  double first = m->stats().at("cube_captures");
+  EXPECT_EQ(first, 1.0);  // one reflector, one pass
+  cam.position.x += 2.0f;  // a view change alone
+  renderer.render(*m, View(cam, size), 0.0f, settings);
+  renderer.render(*m, View(cam, size), 0.0f, settings);
+  EXPECT_EQ(m->stats().at("cube_captures"), first);
+  renderer.render(*m, View(cam, size), 0.5f, settings);  // the box moved
+  EXPECT_EQ(m->stats().at("cube_captures"), first + 1.0);
+}
+
+}  // namespace
+}  // namespace mirage::test

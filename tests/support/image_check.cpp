@@ -1,0 +1,50 @@
+#include "support/image_check.h"
+
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "eval/heatmap.h"
+
+namespace mirage::test {
+
+std::string writeArtifacts(const Image& actual, const Image& expected, const std::string& tag) {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::string name = info ? fmt::format("{}.{}", info->test_suite_name(), info->name()) : "test";
+  std::filesystem::path dir = std::filesystem::path(MIRAGE_TEST_ARTIFACTS) / name;
+  std::filesystem::create_directories(dir);
+  writePng((dir / (tag + ".actual.png")).string(), actual);
+  writePng((dir / (tag + ".expected.png")).string(), expected);
+  writePng((dir / (tag + ".diff.png")).string(), heatmap(absoluteError(actual, expected), 0.25f));
+  return dir.string();
+}
+
+::testing::AssertionResult psnrAtLeast(const Image& actual, const Image& expected, double min_psnr,
+                                       const IdImage* mask, const std::string& tag) {
+  double psnr = psnrFromMse(meanSquaredError(actual, expected, mask));
+  if (psnr >= min_psnr) return ::testing::AssertionSuccess() << "PSNR " << psnr << " dB";
+  return ::testing::AssertionFailure()
+         << tag << ": PSNR " << psnr << " dB < " << min_psnr << " dB; images in "
+         << writeArtifacts(actual, expected, tag);
+}
+
+::testing::AssertionResult mostPixelsWithin(const Image& actual, const Image& expected,
+                                            float tolerance, double max_fraction,
+                                            const IdImage* mask, const std::string& tag) {
+  size_t bad = 0, total = 0;
+  for (size_t i = 0; i < actual.pixelCount(); ++i) {
+    if (mask && mask->data()[i] == 0) continue;
+    ++total;
+    vec3 d = glm::abs(vec3(actual.data()[i]) - vec3(expected.data()[i]));
+    if (std::max({d.x, d.y, d.z}) > tolerance) ++bad;
+  }
+  double fraction = total ? double(bad) / double(total) : 0.0;
+  if (fraction <= max_fraction)
+    return ::testing::AssertionSuccess() << bad << " of " << total << " pixels off";
+  return ::testing::AssertionFailure()
+         << tag << ": " << bad << " of " << total << " pixels (" << fraction * 100.0
+         << "%) differ by more than " << tolerance << " (allowed " << max_fraction * 100.0
+         << "%); images in " << writeArtifacts(actual, expected, tag);
+}
+
+}  // namespace mirage::test

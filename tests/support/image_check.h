@@ -1,0 +1,28 @@
+// Image assertions that leave evidence: on failure they write actual, expected and diff images
+// to build/<preset>/test-artifacts/<suite>.<test>/ and say where.
+#pragma once
+
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "core/image.h"
+#include "eval/metrics.h"
+
+namespace mirage::test {
+
+// Writes actual/expected/diff PNGs (display-encoded inputs) for the current test; returns the
+// directory.
+std::string writeArtifacts(const Image& actual, const Image& expected, const std::string& tag);
+
+// Passes when PSNR (over the mask's pixels, or all pixels) is at least `min_psnr` dB.
+::testing::AssertionResult psnrAtLeast(const Image& actual, const Image& expected, double min_psnr,
+                                       const IdImage* mask, const std::string& tag);
+
+// Passes when at most `max_fraction` of the (masked) pixels differ by more than `tolerance` in
+// any channel.
+::testing::AssertionResult mostPixelsWithin(const Image& actual, const Image& expected,
+                                            float tolerance, double max_fraction,
+                                            const IdImage* mask, const std::string& tag);
+
+}  // namespace mirage::test
