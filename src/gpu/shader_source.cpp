@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "core/error.h"
-#include "gpu/embedded_files.h"
+#include "core/embedded_files.h"
 
 namespace mirage::gpu {
 
