@@ -112,13 +112,17 @@ Scene twoMirrors() {
   Scene s;
   s.description = "two facing planar mirrors with objects between them (reflections of every order)";
   addCheckerFloor(s, 16.0f);
-  int mirror_mesh = addMesh(s, procedural::quad(5.0f, 2.6f));
+  int mirror_mesh = addMesh(s, procedural::quad(7.0f, 2.6f));
   int mirror = addMaterial(s, Material::mirror("mirror", vec3(0.05f), vec3(0.95f)));
   // Quads face +Y; rotate them upright to face each other across x = 0.
   quat face_plus_x = glm::angleAxis(radians(-90.0f), vec3(0, 0, 1)) * rotationY(90.0f);
   quat face_minus_x = glm::angleAxis(radians(90.0f), vec3(0, 0, 1)) * rotationY(90.0f);
   addInstance(s, "mirror-left", mirror_mesh, mirror, placeAt({-3.0f, 1.4f, 0.0f}, vec3(1), face_plus_x));
   addInstance(s, "mirror-right", mirror_mesh, mirror, placeAt({3.0f, 1.4f, 0.0f}, vec3(1), face_minus_x));
+  // Dark frames behind the mirrors, so that their edges show.
+  for (float x : {-3.06f, 3.06f})
+    addBox(s, x < 0 ? "frame-left" : "frame-right", {x, 1.4f, 0.0f}, {0.04f, 1.42f, 3.62f},
+           {0.12f, 0.08f, 0.05f});
   addBox(s, "red-box", {0.0f, 0.4f, 0.0f}, vec3(0.4f), {0.85f, 0.18f, 0.12f}, 20.0f);
   int sphere = addMesh(s, procedural::sphere(0.35f, 48, 24));
   int blue = addMaterial(s, Material::diffuse("blue", {0.15f, 0.3f, 0.85f}));
@@ -128,9 +132,9 @@ Scene twoMirrors() {
   addInstance(s, "column", column, yellow, placeAt({-1.0f, 0.0f, 0.7f}));
   CameraDesc cam;
   cam.name = "main";
-  cam.position = {1.6f, 1.7f, 4.2f};
-  cam.target = {-3.0f, 1.2f, -0.4f};
-  cam.fov_y_degrees = 50.0f;
+  cam.position = {2.3f, 1.8f, 3.0f};
+  cam.target = {-3.0f, 1.1f, -1.2f};
+  cam.fov_y_degrees = 55.0f;
   s.cameras.push_back(cam);
   return s;
 }
