@@ -25,10 +25,12 @@ void addFrameOptions(CLI::App* app, FrameArgs& args) {
   app->add_option("--size", args.size, "image size WxH (1..16384 each)")->capture_default_str();
   app->add_option("--order", args.order, "reflection order K (0..16; 0 = no reflections)")
       ->capture_default_str();
-  app->add_option("--mip", args.mip, "mip-mapped reflection lookups: on|off")->capture_default_str();
+  app->add_option("--mip", args.mip, "mip-mapped reflection lookups: on|off")
+      ->capture_default_str();
   app->add_option("--exposure", args.exposure, "exposure multiplier before tone mapping (> 0)")
       ->capture_default_str();
-  app->add_option("--tonemap", args.tonemap, "tone map: clamp|reinhard|aces")->capture_default_str();
+  app->add_option("--tonemap", args.tonemap, "tone map: clamp|reinhard|aces")
+      ->capture_default_str();
 }
 
 void addMethodParamOptions(CLI::App* app, std::map<std::string, std::string>& values) {
@@ -84,7 +86,8 @@ void warnUnusedParams(const std::map<std::string, std::string>& values,
     bool used = false;
     for (const std::string& m : methods)
       for (const ParamSpec& spec : findMethod(m).info.params) used = used || spec.name == name;
-    if (!used) spdlog::warn("--{} {} is ignored: none of the selected methods uses it", name, value);
+    if (!used)
+      spdlog::warn("--{} {} is ignored: none of the selected methods uses it", name, value);
   }
 }
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cstdlib>
 
-#include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
+#include <nlohmann/json.hpp>
 
 #include "app/cli_common.h"
 #include "app/commands.h"
@@ -46,7 +46,9 @@ Summary summarize(std::vector<double> v) {
   return {v.front(), at(0.5), at(0.95)};
 }
 
-nlohmann::json orNull(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+nlohmann::json orNull(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
 
 struct Run {
   std::string name;
@@ -59,9 +61,12 @@ struct Run {
 int runBench(const BenchArgs& args) {
   ivec2 size = parseSize(args.frame.size);
   FrameSettings settings = frameSettings(args.frame);
-  if (args.frames < 1 || args.frames > 1000000) throwInput("--frames {}: allowed 1..1000000", args.frames);
-  if (args.warmup < 0 || args.warmup > 100000) throwInput("--warmup {}: allowed 0..100000", args.warmup);
-  if (!(args.raytrace_budget_s > 0.0)) throwInput("--raytrace-budget {}: must be > 0", args.raytrace_budget_s);
+  if (args.frames < 1 || args.frames > 1000000)
+    throwInput("--frames {}: allowed 1..1000000", args.frames);
+  if (args.warmup < 0 || args.warmup > 100000)
+    throwInput("--warmup {}: allowed 0..100000", args.warmup);
+  if (!(args.raytrace_budget_s > 0.0))
+    throwInput("--raytrace-budget {}: must be > 0", args.raytrace_budget_s);
   std::vector<std::string> names = parseMethodList(args.methods);
   warnUnusedParams(args.params, names);
   Scene scene = loadSceneFromArgs(args.scene);
@@ -75,7 +80,8 @@ int runBench(const BenchArgs& args) {
     Run r;
     r.name = name;
     r.method = renderer.createMethod(name, args.params, settings);
-    r.timer = std::make_unique<gpu::FrameTimer>(r.method->info().gpu ? gpu_clock : gpu::Clock::kWall);
+    r.timer =
+        std::make_unique<gpu::FrameTimer>(r.method->info().gpu ? gpu_clock : gpu::Clock::kWall);
     r.frames = args.frames;
     runs.push_back(std::move(r));
   }
@@ -88,7 +94,8 @@ int runBench(const BenchArgs& args) {
     // The CPU reference is timed on as many frames as the budget affords.
     if (!r.method->info().gpu) {
       double per_frame_s = first.ms() / 1000.0 / double(std::max(args.warmup, 1));
-      r.frames = std::clamp(int(args.raytrace_budget_s / std::max(per_frame_s, 1e-6)), 3, args.frames);
+      r.frames =
+          std::clamp(int(args.raytrace_budget_s / std::max(per_frame_s, 1e-6)), 3, args.frames);
     }
     r.reflector_pixels = countNonZero(renderer.read().ids);
   }
@@ -171,11 +178,13 @@ Command addBenchCommand(CLI::App& parent) {
   addSceneOptions(cmd.app, args->scene);
   cmd.app->add_option("--methods", args->methods, "all, or a comma-separated list of methods")
       ->capture_default_str();
-  cmd.app->add_option("--frames", args->frames, "timed frames per method (1..1000000)")->capture_default_str();
+  cmd.app->add_option("--frames", args->frames, "timed frames per method (1..1000000)")
+      ->capture_default_str();
   cmd.app->add_option("--warmup", args->warmup, "untimed frames per method first (0..100000)")
       ->capture_default_str();
-  cmd.app->add_option("--raytrace-budget", args->raytrace_budget_s,
-                      "seconds the CPU ray tracer may spend on its timed frames (at least 3 frames)")
+  cmd.app
+      ->add_option("--raytrace-budget", args->raytrace_budget_s,
+                   "seconds the CPU ray tracer may spend on its timed frames (at least 3 frames)")
       ->capture_default_str();
   addFrameOptions(cmd.app, args->frame);
   cmd.app->add_option("--json", args->json, "output JSON file")->required();

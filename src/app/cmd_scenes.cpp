@@ -15,8 +15,10 @@ Command addScenesCommand(CLI::App& parent) {
   cmd.run = [verbose] {
     for (const SceneListing& s : listScenes()) {
       if (s.available) {
-        if (*verbose) std::printf("%-22s %s\n", s.name.c_str(), s.description.c_str());
-        else std::printf("%s\n", s.name.c_str());
+        if (*verbose)
+          std::printf("%-22s %s\n", s.name.c_str(), s.description.c_str());
+        else
+          std::printf("%s\n", s.name.c_str());
       } else {
         std::fprintf(stderr, "%s (not available: %s)\n", s.name.c_str(), s.missing.c_str());
       }

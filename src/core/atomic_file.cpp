@@ -25,8 +25,8 @@ std::string uniqueSuffix() {
 AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   std::filesystem::path p(path_);
   // Keep the extension last: some writers pick the format from it.
-  std::string name = fmt::format(".{}.tmp.{}{}", p.stem().string(), uniqueSuffix(),
-                                 p.extension().string());
+  std::string name =
+      fmt::format(".{}.tmp.{}{}", p.stem().string(), uniqueSuffix(), p.extension().string());
   temp_path_ = (p.parent_path() / name).string();
 }
 

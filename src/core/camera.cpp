@@ -8,7 +8,8 @@ View::View(const CameraDesc& camera, ivec2 size) : size_(size) {
   if (size.x <= 0 || size.y <= 0) throwInput("view size {}x{} must be positive", size.x, size.y);
   eye_ = camera.position;
   vec3 to_target = camera.target - camera.position;
-  if (glm::length(to_target) <= 0.0f) throwInput("camera '{}': position equals target", camera.name);
+  if (glm::length(to_target) <= 0.0f)
+    throwInput("camera '{}': position equals target", camera.name);
   forward_ = glm::normalize(to_target);
   vec3 r = glm::cross(forward_, camera.up);
   if (glm::length(r) < 1e-6f) {
@@ -27,7 +28,8 @@ View::View(const CameraDesc& camera, ivec2 size) : size_(size) {
 Ray View::primaryRay(float px, float py) const {
   float ndc_x = 2.0f * px / float(size_.x) - 1.0f;
   float ndc_y = 1.0f - 2.0f * py / float(size_.y);
-  vec3 d = forward_ + (ndc_x * tan_half_fov_y_ * aspect()) * right_ + (ndc_y * tan_half_fov_y_) * up_;
+  vec3 d =
+      forward_ + (ndc_x * tan_half_fov_y_ * aspect()) * right_ + (ndc_y * tan_half_fov_y_) * up_;
   return Ray{eye_, glm::normalize(d), 0.0f, kInfinity};
 }
 
@@ -35,7 +37,8 @@ vec3 View::project(const vec3& world) const {
   vec4 clip = viewProjection() * vec4(world, 1.0f);
   vec3 ndc = vec3(clip) / clip.w;
   float depth = glm::dot(world - eye_, forward_);
-  return vec3((ndc.x * 0.5f + 0.5f) * float(size_.x), (0.5f - ndc.y * 0.5f) * float(size_.y), depth);
+  return vec3((ndc.x * 0.5f + 0.5f) * float(size_.x), (0.5f - ndc.y * 0.5f) * float(size_.y),
+              depth);
 }
 
 CameraDesc frameBounds(const vec3& center, float radius, const vec3& from_direction,

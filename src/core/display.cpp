@@ -25,9 +25,12 @@ ToneMap parseToneMap(const std::string& name) {
 
 const char* toneMapName(ToneMap tonemap) {
   switch (tonemap) {
-    case ToneMap::kClamp: return "clamp";
-    case ToneMap::kReinhard: return "reinhard";
-    case ToneMap::kAces: return "aces";
+    case ToneMap::kClamp:
+      return "clamp";
+    case ToneMap::kReinhard:
+      return "reinhard";
+    case ToneMap::kAces:
+      return "aces";
   }
   return "?";
 }

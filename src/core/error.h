@@ -11,9 +11,9 @@ namespace mirage {
 
 enum class ExitCode : int {
   kOk = 0,
-  kFailure = 1,    // a bug or an environment problem that is not the user's input
-  kBadInput = 2,   // bad command line, scene file, mesh, image or parameter
-  kNoOpenGL = 3,   // no OpenGL 4.5 driver could be found
+  kFailure = 1,   // a bug or an environment problem that is not the user's input
+  kBadInput = 2,  // bad command line, scene file, mesh, image or parameter
+  kNoOpenGL = 3,  // no OpenGL 4.5 driver could be found
 };
 
 class Error : public std::runtime_error {

@@ -24,9 +24,10 @@ constexpr int64_t kMaxImagePixels = int64_t(1) << 27;  // 134M pixels = 2 GiB of
 
 void checkImageSize(const std::string& name, int64_t w, int64_t h) {
   if (w <= 0 || h <= 0 || w > kMaxImageSide || h > kMaxImageSide || w * h > kMaxImagePixels)
-    throwInput("{}: image size {}x{} is outside the supported range (1..{} per side, at most {} "
-               "pixels)",
-               name, w, h, kMaxImageSide, kMaxImagePixels);
+    throwInput(
+        "{}: image size {}x{} is outside the supported range (1..{} per side, at most {} "
+        "pixels)",
+        name, w, h, kMaxImageSide, kMaxImagePixels);
 }
 
 const std::array<float, 256>& srgbTable() {
@@ -95,7 +96,8 @@ Image fromStb(const std::string& name, void* data, int w, int h, bool is_float, 
     for (size_t i = 0; i < image.pixelCount(); ++i) {
       vec4 v;
       for (int c = 0; c < 3; ++c)
-        v[c] = encoding == Encoding::kSrgb ? table[b[4 * i + size_t(c)]] : b[4 * i + size_t(c)] / 255.0f;
+        v[c] = encoding == Encoding::kSrgb ? table[b[4 * i + size_t(c)]]
+                                           : b[4 * i + size_t(c)] / 255.0f;
       v.w = b[4 * i + 3] / 255.0f;  // alpha is always linear
       image.data()[i] = v;
     }
@@ -148,7 +150,8 @@ void writePng(const std::string& path, const Image& display, bool keep_alpha) {
   std::vector<unsigned char> bytes(display.pixelCount() * 4);
   for (size_t i = 0; i < display.pixelCount(); ++i) {
     vec4 p = glm::clamp(display.data()[i], 0.0f, 1.0f);
-    for (int c = 0; c < 4; ++c) bytes[4 * i + size_t(c)] = (unsigned char)std::lround(p[c] * 255.0f);
+    for (int c = 0; c < 4; ++c)
+      bytes[4 * i + size_t(c)] = (unsigned char)std::lround(p[c] * 255.0f);
     if (!keep_alpha) bytes[4 * i + 3] = 255;
   }
   AtomicFile file(path);

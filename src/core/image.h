@@ -27,7 +27,9 @@ class Image2D {
   size_t pixelCount() const { return pixels_.size(); }
 
   T& operator()(int x, int y) { return pixels_[size_t(y) * size_t(width_) + size_t(x)]; }
-  const T& operator()(int x, int y) const { return pixels_[size_t(y) * size_t(width_) + size_t(x)]; }
+  const T& operator()(int x, int y) const {
+    return pixels_[size_t(y) * size_t(width_) + size_t(x)];
+  }
   T* data() { return pixels_.data(); }
   const T* data() const { return pixels_.data(); }
   std::vector<T>& pixels() { return pixels_; }
@@ -44,8 +46,8 @@ class Image2D {
   std::vector<T> pixels_;
 };
 
-using Image = Image2D<vec4>;         // linear RGBA radiance (or any float data)
-using IdImage = Image2D<uint32_t>;   // reflector ID per pixel: 0 = not a reflector
+using Image = Image2D<vec4>;        // linear RGBA radiance (or any float data)
+using IdImage = Image2D<uint32_t>;  // reflector ID per pixel: 0 = not a reflector
 
 // How 8-bit files are decoded: colour textures are sRGB, normal maps and masks are linear.
 enum class Encoding { kSrgb, kLinear };

@@ -29,17 +29,27 @@ using glm::vec4;
 inline constexpr float kPi = 3.14159265358979323846f;
 inline constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
-inline float radians(float degrees) { return degrees * (kPi / 180.0f); }
-inline float degrees(float radians) { return radians * (180.0f / kPi); }
+inline float radians(float degrees) {
+  return degrees * (kPi / 180.0f);
+}
+inline float degrees(float radians) {
+  return radians * (180.0f / kPi);
+}
 
 inline bool isFinite(const vec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
 // Transforms a point / a direction by an affine matrix.
-inline vec3 transformPoint(const mat4& m, const vec3& p) { return vec3(m * vec4(p, 1.0f)); }
-inline vec3 transformVector(const mat4& m, const vec3& v) { return vec3(m * vec4(v, 0.0f)); }
+inline vec3 transformPoint(const mat4& m, const vec3& p) {
+  return vec3(m * vec4(p, 1.0f));
+}
+inline vec3 transformVector(const mat4& m, const vec3& v) {
+  return vec3(m * vec4(v, 0.0f));
+}
 // Normals transform with the inverse transpose of the upper 3x3.
-inline mat3 normalMatrix(const mat4& m) { return glm::transpose(glm::inverse(mat3(m))); }
+inline mat3 normalMatrix(const mat4& m) {
+  return glm::transpose(glm::inverse(mat3(m)));
+}
 
 }  // namespace mirage

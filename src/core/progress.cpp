@@ -14,8 +14,11 @@ bool Progress::enabled() {
 }
 
 Progress::Progress(std::string label, size_t total)
-    : label_(std::move(label)), total_(std::max<size_t>(total, 1)),
-      start_(std::chrono::steady_clock::now()), last_draw_(start_), active_(enabled()) {}
+    : label_(std::move(label)),
+      total_(std::max<size_t>(total, 1)),
+      start_(std::chrono::steady_clock::now()),
+      last_draw_(start_),
+      active_(enabled()) {}
 
 Progress::~Progress() {
   if (active_) draw(done_.load(), true);

@@ -26,6 +26,8 @@ void Buffer::download(void* data, size_t bytes, size_t offset) const {
   glGetNamedBufferSubData(id(), GLintptr(offset), GLsizeiptr(bytes), data);
 }
 
-void Buffer::bindBase(GLenum target, GLuint index) const { glBindBufferBase(target, index, id()); }
+void Buffer::bindBase(GLenum target, GLuint index) const {
+  glBindBufferBase(target, index, id());
+}
 
 }  // namespace mirage::gpu

@@ -78,10 +78,10 @@ std::unique_ptr<EglContext> createOn(EGLDisplay display, bool debug, std::string
       return nullptr;
     }
   }
-  std::vector<EGLint> attributes = {EGL_CONTEXT_MAJOR_VERSION, 4,
-                                    EGL_CONTEXT_MINOR_VERSION, 5,
-                                    EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                    EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT};
+  std::vector<EGLint> attributes = {
+      EGL_CONTEXT_MAJOR_VERSION,       4,
+      EGL_CONTEXT_MINOR_VERSION,       5,
+      EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT};
   if (debug) attributes.insert(attributes.end(), {EGL_CONTEXT_OPENGL_DEBUG, EGL_TRUE});
   attributes.push_back(EGL_NONE);
   EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, attributes.data());
@@ -144,9 +144,10 @@ std::unique_ptr<Context> createHeadlessContext(const ContextOptions& options) {
     }
     reasons += fmt::format("\n  {}: {}", candidate.name, why);
   }
-  throw NoOpenGLError("no OpenGL 4.5 core driver found (install Mesa: libegl-mesa0 "
-                      "libgl1-mesa-dri, or a GPU driver). Tried:" +
-                      reasons);
+  throw NoOpenGLError(
+      "no OpenGL 4.5 core driver found (install Mesa: libegl-mesa0 "
+      "libgl1-mesa-dri, or a GPU driver). Tried:" +
+      reasons);
 }
 
 }  // namespace mirage::gpu

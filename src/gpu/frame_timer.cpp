@@ -6,16 +6,23 @@ namespace mirage::gpu {
 
 const char* partName(Part part) {
   switch (part) {
-    case Part::kUpdate: return "update";
-    case Part::kDirect: return "direct";
-    case Part::kReflect: return "reflect";
+    case Part::kUpdate:
+      return "update";
+    case Part::kDirect:
+      return "direct";
+    case Part::kReflect:
+      return "reflect";
   }
   return "?";
 }
 
-Clock defaultClock(bool software_renderer) { return software_renderer ? Clock::kWall : Clock::kGpu; }
+Clock defaultClock(bool software_renderer) {
+  return software_renderer ? Clock::kWall : Clock::kGpu;
+}
 
-const char* clockName(Clock clock) { return clock == Clock::kWall ? "wall+glFinish" : "gl-timestamp"; }
+const char* clockName(Clock clock) {
+  return clock == Clock::kWall ? "wall+glFinish" : "gl-timestamp";
+}
 
 void FrameTimer::mark(int part) {
   Mark m{part, 0.0, 0};

@@ -7,8 +7,8 @@
 #include <set>
 #include <sstream>
 
-#include "core/error.h"
 #include "core/embedded_files.h"
+#include "core/error.h"
 
 namespace mirage::gpu {
 
@@ -51,7 +51,8 @@ void expand(const std::string& path, ShaderSource& out, std::set<std::string>& s
     size_t close = t.find('"', open + 1);
     if (close == std::string::npos) throwRuntime("{}:{}: malformed #include", path, number);
     std::string name = t.substr(open + 1, close - open - 1);
-    std::string relative = dir.empty() ? name : (std::filesystem::path(dir) / name).lexically_normal().string();
+    std::string relative =
+        dir.empty() ? name : (std::filesystem::path(dir) / name).lexically_normal().string();
     std::string resolved = shaderFileExists(relative) ? relative : name;
     if (!shaderFileExists(resolved))
       throwRuntime("{}:{}: included file '{}' is not among the shader sources", path, number, name);

@@ -15,7 +15,8 @@ struct ShaderSource {
 };
 
 // `defines` are lines like "NAME" or "NAME VALUE", emitted as #define after #version.
-ShaderSource loadShaderSource(const std::string& path, const std::vector<std::string>& defines = {});
+ShaderSource loadShaderSource(const std::string& path,
+                              const std::vector<std::string>& defines = {});
 
 // Rewrites a driver's compile log so that "S:L" / "S(L)" locations name files.
 std::string annotateShaderLog(const std::string& log, const std::vector<std::string>& files);

@@ -33,7 +33,9 @@ Texture::Texture(GLenum target, GLenum format, ivec2 size, int layers, int level
   glTextureParameteri(id, GL_TEXTURE_WRAP_R, wrap);
 }
 
-int Texture::fullMipLevels(int size) { return std::bit_width(unsigned(std::max(size, 1))); }
+int Texture::fullMipLevels(int size) {
+  return std::bit_width(unsigned(std::max(size, 1)));
+}
 
 Texture Texture::create2D(GLenum internal_format, int width, int height, int levels) {
   checkSize(width, height, 1);
@@ -74,7 +76,9 @@ void Texture::uploadLayer(int level, int layer, GLenum format, GLenum type, cons
   glTextureSubImage3D(id(), level, 0, 0, layer, w, h, 1, format, type, pixels);
 }
 
-void Texture::generateMipmaps() { glGenerateTextureMipmap(id()); }
+void Texture::generateMipmaps() {
+  glGenerateTextureMipmap(id());
+}
 
 void Texture::setFilter(GLenum min_filter, GLenum mag_filter) {
   glTextureParameteri(id(), GL_TEXTURE_MIN_FILTER, GLint(min_filter));

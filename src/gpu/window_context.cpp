@@ -34,8 +34,9 @@ WindowContext::WindowContext(const WindowOptions& options) {
   const char* display = std::getenv("DISPLAY");
   const char* wayland = std::getenv("WAYLAND_DISPLAY");
   if ((!display || !*display) && (!wayland || !*wayland))
-    throwInput("no display: a window needs an X server (set DISPLAY, or run under `xvfb-run -a`); "
-               "the headless commands render, compare and bench need none");
+    throwInput(
+        "no display: a window needs an X server (set DISPLAY, or run under `xvfb-run -a`); "
+        "the headless commands render, compare and bench need none");
   if (g_windows++ == 0 && !glfwInit()) {
     --g_windows;
     throwInput("cannot open the display '{}': {}", display ? display : "", lastGlfwError());
@@ -48,7 +49,8 @@ WindowContext::WindowContext(const WindowOptions& options) {
   glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, options.debug ? GLFW_TRUE : GLFW_FALSE);
   glfwWindowHint(GLFW_VISIBLE, options.visible ? GLFW_TRUE : GLFW_FALSE);
   glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
-  window_ = glfwCreateWindow(options.size.x, options.size.y, options.title.c_str(), nullptr, nullptr);
+  window_ =
+      glfwCreateWindow(options.size.x, options.size.y, options.title.c_str(), nullptr, nullptr);
   if (!window_) {
     if (--g_windows == 0) glfwTerminate();
     throw NoOpenGLError("no OpenGL 4.5 core context for a window: " + lastGlfwError());
@@ -70,10 +72,18 @@ WindowContext::~WindowContext() {
   if (--g_windows == 0) glfwTerminate();
 }
 
-void WindowContext::makeCurrent() { glfwMakeContextCurrent(window_); }
-bool WindowContext::shouldClose() const { return glfwWindowShouldClose(window_); }
-void WindowContext::swapBuffers() { glfwSwapBuffers(window_); }
-void WindowContext::setVsync(bool on) { glfwSwapInterval(on ? 1 : 0); }
+void WindowContext::makeCurrent() {
+  glfwMakeContextCurrent(window_);
+}
+bool WindowContext::shouldClose() const {
+  return glfwWindowShouldClose(window_);
+}
+void WindowContext::swapBuffers() {
+  glfwSwapBuffers(window_);
+}
+void WindowContext::setVsync(bool on) {
+  glfwSwapInterval(on ? 1 : 0);
+}
 
 ivec2 WindowContext::framebufferSize() const {
   ivec2 size;

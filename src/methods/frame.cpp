@@ -42,6 +42,8 @@ void FrameRenderer::render(Method& method, const View& view, float time,
   if (timer) timer->endFrame();
 }
 
-RenderedFrame FrameRenderer::read() const { return {target_.readColor(), target_.readIds()}; }
+RenderedFrame FrameRenderer::read() const {
+  return {target_.readColor(), target_.readIds()};
+}
 
 }  // namespace mirage

@@ -23,8 +23,8 @@ inline constexpr int kAnyOrder = 1 << 20;
 struct MethodInfo {
   std::string name;
   std::string description;
-  int max_order = kAnyOrder;   // the highest reflection order it can produce
-  bool gpu = true;             // false: renders on the CPU (the ray tracer)
+  int max_order = kAnyOrder;  // the highest reflection order it can produce
+  bool gpu = true;            // false: renders on the CPU (the ray tracer)
   std::vector<ParamSpec> params;
 };
 

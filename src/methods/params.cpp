@@ -23,12 +23,15 @@ bool parseInt(const std::string& text, long long& out) {
   return ec == std::errc() && ptr == end;
 }
 
-std::string formatNumber(double v) { return fmt::format("{:g}", v); }
+std::string formatNumber(double v) {
+  return fmt::format("{:g}", v);
+}
 
 }  // namespace
 
 ParamSpec ParamSpec::integer(std::string name, int min, int max, int def, std::string help) {
-  return {std::move(name), Type::kInt, double(min), double(max), std::to_string(def), {}, std::move(help)};
+  return {std::move(name),     Type::kInt, double(min),    double(max),
+          std::to_string(def), {},         std::move(help)};
 }
 
 ParamSpec ParamSpec::real(std::string name, double min, double max, double def, std::string help) {
@@ -37,7 +40,8 @@ ParamSpec ParamSpec::real(std::string name, double min, double max, double def, 
 
 ParamSpec ParamSpec::choice(std::string name, std::vector<std::string> choices, std::string def,
                             std::string help) {
-  return {std::move(name), Type::kChoice, 0, 0, std::move(def), std::move(choices), std::move(help)};
+  return {std::move(name),    Type::kChoice,  0, 0, std::move(def),
+          std::move(choices), std::move(help)};
 }
 
 std::string ParamSpec::rangeText() const {
@@ -96,8 +100,12 @@ ParamValues ParamValues::validate(const std::vector<ParamSpec>& specs,
   return out;
 }
 
-int ParamValues::integer(const std::string& name) const { return std::stoi(text(name)); }
-double ParamValues::real(const std::string& name) const { return std::stod(text(name)); }
+int ParamValues::integer(const std::string& name) const {
+  return std::stoi(text(name));
+}
+double ParamValues::real(const std::string& name) const {
+  return std::stod(text(name));
+}
 
 const std::string& ParamValues::text(const std::string& name) const {
   auto it = values_.find(name);

@@ -39,8 +39,12 @@ std::vector<std::string> parseMethodList(const std::string& list) {
   size_t start = 0;
   while (start <= list.size()) {
     size_t comma = list.find(',', start);
-    std::string name = list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    if (name.empty()) throwInput("--methods '{}': empty method name (allowed: all, or a comma-separated list of {})", list, fmt::join(methodNames(), ", "));
+    std::string name =
+        list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    if (name.empty())
+      throwInput(
+          "--methods '{}': empty method name (allowed: all, or a comma-separated list of {})", list,
+          fmt::join(methodNames(), ", "));
     findMethod(name);
     if (std::find(out.begin(), out.end(), name) == out.end()) out.push_back(name);
     if (comma == std::string::npos) break;

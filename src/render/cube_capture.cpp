@@ -9,9 +9,12 @@ CubeCapture::CubeCapture(int size)
   fbo_.attachDepth(depth_);
 }
 
-CameraDesc CubeCapture::faceCamera(int face, const vec3& center, float near_plane, float far_plane) {
-  static const vec3 kForward[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-  static const vec3 kUp[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+CameraDesc CubeCapture::faceCamera(int face, const vec3& center, float near_plane,
+                                   float far_plane) {
+  static const vec3 kForward[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                   {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
+  static const vec3 kUp[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1},
+                              {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
   CameraDesc c;
   c.name = "cube-face";
   c.position = center;
@@ -26,7 +29,8 @@ CameraDesc CubeCapture::faceCamera(int face, const vec3& center, float near_plan
 void CubeCapture::capture(const gpu::Texture& target, int cube, const vec3& center,
                           float near_plane, float far_plane,
                           const std::function<void(const View&)>& draw) {
-  if (target.size().x != size_) throwRuntime("cube capture of size {} into a {} cube map", size_, target.size().x);
+  if (target.size().x != size_)
+    throwRuntime("cube capture of size {} into a {} cube map", size_, target.size().x);
   const float black[4] = {0, 0, 0, 0};
   const float far_depth = 1.0f;
   for (int face = 0; face < 6; ++face) {

@@ -50,7 +50,8 @@ GpuScene::GpuScene(const Scene& scene, const EnvironmentMap& environment)
 
   for (const TextureImage& t : scene.textures) {
     int levels = gpu::Texture::fullMipLevels(std::max(t.image.width(), t.image.height()));
-    gpu::Texture tex = gpu::Texture::create2D(GL_RGBA16F, t.image.width(), t.image.height(), levels);
+    gpu::Texture tex =
+        gpu::Texture::create2D(GL_RGBA16F, t.image.width(), t.image.height(), levels);
     tex.upload(0, GL_RGBA, GL_FLOAT, t.image.data());
     tex.generateMipmaps();
     tex.setWrap(GL_REPEAT);
@@ -114,7 +115,8 @@ void GpuScene::bindShared() const {
 void GpuScene::draw(int instance) const {
   const Instance& inst = scene_.instances[size_t(instance)];
   const Material& material = scene_.materials[size_t(inst.material)];
-  if (material.albedo_texture >= 0) textures_[size_t(material.albedo_texture)].bind(MIRAGE_UNIT_ALBEDO);
+  if (material.albedo_texture >= 0)
+    textures_[size_t(material.albedo_texture)].bind(MIRAGE_UNIT_ALBEDO);
   if (material.normal_map >= 0) textures_[size_t(material.normal_map)].bind(MIRAGE_UNIT_NORMAL_MAP);
   glUniform1i(0, instance);  // layout(location = 0) uniform int u_instance
   const GpuMesh& mesh = meshes_[size_t(inst.mesh)];

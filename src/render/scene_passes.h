@@ -14,8 +14,8 @@
 namespace mirage {
 
 struct FrameSettings {
-  int order = 2;     // reflection order K
-  bool mip = true;   // mip-mapped (filtered) reflection lookups
+  int order = 2;    // reflection order K
+  bool mip = true;  // mip-mapped (filtered) reflection lookups
 };
 
 shading::FrameData makeFrameData(const View& view, const Scene& scene, float time,

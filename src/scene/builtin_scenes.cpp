@@ -10,8 +10,12 @@ namespace {
 const vec3 kCheckerLight{0.85f, 0.85f, 0.82f};
 const vec3 kCheckerDark{0.10f, 0.10f, 0.12f};
 
-quat rotationX(float degrees) { return glm::angleAxis(radians(degrees), vec3(1, 0, 0)); }
-quat rotationY(float degrees) { return glm::angleAxis(radians(degrees), vec3(0, 1, 0)); }
+quat rotationX(float degrees) {
+  return glm::angleAxis(radians(degrees), vec3(1, 0, 0));
+}
+quat rotationY(float degrees) {
+  return glm::angleAxis(radians(degrees), vec3(0, 1, 0));
+}
 
 // A checkerboard floor of `size` units with one-unit cells, at y = 0.
 void addCheckerFloor(Scene& s, float size) {
@@ -83,8 +87,9 @@ Scene spheres9(const SceneOptions& options) {
 
 Scene mirrorRoom() {
   Scene s;
-  s.description = "a checkerboard room with one planar wall mirror, a teapot-like object on an "
-                  "inverted pyramid and a box";
+  s.description =
+      "a checkerboard room with one planar wall mirror, a teapot-like object on an "
+      "inverted pyramid and a box";
   int room = addMesh(s, procedural::box({4.0f, 2.0f, 4.0f}, true));
   int walls = addMaterial(s, Material::checker("walls", kCheckerLight, {0.25f, 0.35f, 0.6f}, 1.0f));
   addInstance(s, "room", room, walls, placeAt({0.0f, 2.0f, 0.0f}));
@@ -110,15 +115,18 @@ Scene mirrorRoom() {
 
 Scene twoMirrors() {
   Scene s;
-  s.description = "two facing planar mirrors with objects between them (reflections of every order)";
+  s.description =
+      "two facing planar mirrors with objects between them (reflections of every order)";
   addCheckerFloor(s, 16.0f);
   int mirror_mesh = addMesh(s, procedural::quad(7.0f, 2.6f));
   int mirror = addMaterial(s, Material::mirror("mirror", vec3(0.05f), vec3(0.95f)));
   // Quads face +Y; rotate them upright to face each other across x = 0.
   quat face_plus_x = glm::angleAxis(radians(-90.0f), vec3(0, 0, 1)) * rotationY(90.0f);
   quat face_minus_x = glm::angleAxis(radians(90.0f), vec3(0, 0, 1)) * rotationY(90.0f);
-  addInstance(s, "mirror-left", mirror_mesh, mirror, placeAt({-3.0f, 1.4f, 0.0f}, vec3(1), face_plus_x));
-  addInstance(s, "mirror-right", mirror_mesh, mirror, placeAt({3.0f, 1.4f, 0.0f}, vec3(1), face_minus_x));
+  addInstance(s, "mirror-left", mirror_mesh, mirror,
+              placeAt({-3.0f, 1.4f, 0.0f}, vec3(1), face_plus_x));
+  addInstance(s, "mirror-right", mirror_mesh, mirror,
+              placeAt({3.0f, 1.4f, 0.0f}, vec3(1), face_minus_x));
   // Dark frames behind the mirrors, so that their edges show.
   for (float x : {-3.06f, 3.06f})
     addBox(s, x < 0 ? "frame-left" : "frame-right", {x, 1.4f, 0.0f}, {0.04f, 1.42f, 3.62f},
@@ -151,7 +159,8 @@ int addMaterial(Scene& scene, Material material) {
   return int(scene.materials.size()) - 1;
 }
 
-int addInstance(Scene& scene, std::string name, int mesh, int material, const Transform& transform) {
+int addInstance(Scene& scene, std::string name, int mesh, int material,
+                const Transform& transform) {
   Instance inst;
   inst.name = std::move(name);
   inst.mesh = mesh;
@@ -186,11 +195,16 @@ bool isBuiltinScene(const std::string& name) {
 
 Scene makeBuiltinScene(const std::string& name, const SceneOptions& options) {
   Scene s;
-  if (name == "sphere-over-checker") s = sphereOverChecker();
-  else if (name == "spheres9") s = spheres9(options);
-  else if (name == "mirror-room") s = mirrorRoom();
-  else if (name == "two-mirrors") s = twoMirrors();
-  else throwInput("unknown built-in scene '{}'", name);
+  if (name == "sphere-over-checker")
+    s = sphereOverChecker();
+  else if (name == "spheres9")
+    s = spheres9(options);
+  else if (name == "mirror-room")
+    s = mirrorRoom();
+  else if (name == "two-mirrors")
+    s = twoMirrors();
+  else
+    throwInput("unknown built-in scene '{}'", name);
   if (options.reflectors >= 0 && name != "spheres9")
     throwInput("--reflectors applies to spheres9 only, not to '{}'", name);
   s.name = name;

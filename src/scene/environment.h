@@ -32,7 +32,9 @@ class EnvironmentMap {
   // Radiance in direction `d` (need not be unit): bilinear on level 0, seamless across faces.
   vec3 sample(const vec3& d) const;
   // The texel (face, x, y) value.
-  vec3 texel(int face, int x, int y) const { return vec3(faces_[size_t(face)][size_t(y * size_ + x)]); }
+  vec3 texel(int face, int x, int y) const {
+    return vec3(faces_[size_t(face)][size_t(y * size_ + x)]);
+  }
 
  private:
   template <typename F>

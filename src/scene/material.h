@@ -14,16 +14,17 @@ struct Material {
 
   std::string name;
   Kind kind = Kind::kDiffuse;
-  vec3 albedo{0.8f};         // diffuse albedo, or a reflector's base colour
-  int albedo_texture = -1;   // index into Scene::textures (diffuse only), multiplies albedo
-  float checker_scale = 0;   // > 0: procedural checker, cells per uv unit, colours albedo/checker_color
+  vec3 albedo{0.8f};        // diffuse albedo, or a reflector's base colour
+  int albedo_texture = -1;  // index into Scene::textures (diffuse only), multiplies albedo
+  float checker_scale =
+      0;  // > 0: procedural checker, cells per uv unit, colours albedo/checker_color
   vec3 checker_color{0.1f};
   // Reflector parameters.
   vec3 tint{1.0f};
-  float reflectivity = 1.0f;      // [0, 1]
-  float fresnel_f0 = 1.0f;        // [0, 1]; 1 = a perfect mirror at every angle
-  float attenuation_range = 0.0f; // >= 0; 0 = no distance attenuation
-  int normal_map = -1;            // index into Scene::textures
+  float reflectivity = 1.0f;       // [0, 1]
+  float fresnel_f0 = 1.0f;         // [0, 1]; 1 = a perfect mirror at every angle
+  float attenuation_range = 0.0f;  // >= 0; 0 = no distance attenuation
+  int normal_map = -1;             // index into Scene::textures
 
   bool isReflector() const { return kind == Kind::kReflector; }
   shading::MaterialData gpuData() const;

@@ -57,7 +57,8 @@ Mesh sphere(float radius, int segments, int rings) {
 Mesh box(const vec3& h, bool inward) {
   Mesh m;
   vec3 c[8];
-  for (int i = 0; i < 8; ++i) c[i] = vec3(i & 1 ? h.x : -h.x, i & 2 ? h.y : -h.y, i & 4 ? h.z : -h.z);
+  for (int i = 0; i < 8; ++i)
+    c[i] = vec3(i & 1 ? h.x : -h.x, i & 2 ? h.y : -h.y, i & 4 ? h.z : -h.z);
   vec3 s = 2.0f * h;
   addQuad(m, c[4], c[5], c[7], c[6], {s.x, s.y});  // +Z
   addQuad(m, c[1], c[0], c[2], c[3], {s.x, s.y});  // -Z
@@ -76,18 +77,21 @@ Mesh box(const vec3& h, bool inward) {
 Mesh quad(float width, float depth, float uv_per_unit) {
   Mesh m;
   float x = 0.5f * width, z = 0.5f * depth;
-  addQuad(m, {-x, 0, z}, {x, 0, z}, {x, 0, -z}, {-x, 0, -z}, {width * uv_per_unit, depth * uv_per_unit});
+  addQuad(m, {-x, 0, z}, {x, 0, z}, {x, 0, -z}, {-x, 0, -z},
+          {width * uv_per_unit, depth * uv_per_unit});
   finish(m, "quad");
   return m;
 }
 
 Mesh lathe(const std::vector<vec2>& profile, int segments) {
-  if (profile.size() < 2 || segments < 3) throwInput("lathe: needs >= 2 profile points, >= 3 segments");
+  if (profile.size() < 2 || segments < 3)
+    throwInput("lathe: needs >= 2 profile points, >= 3 segments");
   Mesh m;
   for (size_t p = 0; p < profile.size(); ++p) {
     for (int s = 0; s <= segments; ++s) {
       float phi = 2.0f * kPi * float(s) / float(segments);
-      m.positions.push_back({profile[p].x * std::cos(phi), profile[p].y, -profile[p].x * std::sin(phi)});
+      m.positions.push_back(
+          {profile[p].x * std::cos(phi), profile[p].y, -profile[p].x * std::sin(phi)});
       m.uvs.push_back({float(s) / float(segments), float(p) / float(profile.size() - 1)});
     }
   }
@@ -115,7 +119,11 @@ Mesh lathe(const std::vector<vec2>& profile, int segments) {
 }
 
 Mesh cylinder(float radius, float height, int segments) {
-  return lathe({{0.0f, 0.0f}, {radius, 0.0f}, {radius, 0.0f}, {radius, height}, {radius, height},
+  return lathe({{0.0f, 0.0f},
+                {radius, 0.0f},
+                {radius, 0.0f},
+                {radius, height},
+                {radius, height},
                 {0.0f, height}},
                segments);
 }
@@ -157,8 +165,10 @@ Mesh pyramid(float w, float height, bool inverted) {
     m.positions.insert(m.positions.end(), {p, q, apex});
     m.normals.insert(m.normals.end(), {n, n, n});
     m.uvs.insert(m.uvs.end(), {{0, 0}, {1, 0}, {0.5f, 1}});
-    if (inverted) m.triangles.push_back({base, base + 2, base + 1});
-    else m.triangles.push_back({base, base + 1, base + 2});
+    if (inverted)
+      m.triangles.push_back({base, base + 2, base + 1});
+    else
+      m.triangles.push_back({base, base + 1, base + 2});
   }
   // The base (top face when inverted).
   uint32_t base = uint32_t(m.positions.size());
@@ -203,8 +213,10 @@ void append(Mesh& mesh, Mesh part, const mat4& m) {
   bool uvs = mesh.uvs.size() == mesh.positions.size() && part.uvs.size() == part.positions.size();
   mesh.positions.insert(mesh.positions.end(), part.positions.begin(), part.positions.end());
   mesh.normals.insert(mesh.normals.end(), part.normals.begin(), part.normals.end());
-  if (uvs) mesh.uvs.insert(mesh.uvs.end(), part.uvs.begin(), part.uvs.end());
-  else mesh.uvs.clear();
+  if (uvs)
+    mesh.uvs.insert(mesh.uvs.end(), part.uvs.begin(), part.uvs.end());
+  else
+    mesh.uvs.clear();
   mesh.tangents.clear();
   for (uvec3 t : part.triangles) mesh.triangles.push_back(t + uvec3(base));
 }

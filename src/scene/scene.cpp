@@ -52,7 +52,8 @@ void Scene::validate() const {
     return fmt::format("{}: {}[{}]{}", source.empty() ? name : source, kind, i,
                        n.empty() ? "" : " ('" + n + "')");
   };
-  if (instances.empty()) throwInput("{}: the scene has no instances", source.empty() ? name : source);
+  if (instances.empty())
+    throwInput("{}: the scene has no instances", source.empty() ? name : source);
   for (size_t i = 0; i < meshes.size(); ++i) meshes[i].validate();
   for (size_t i = 0; i < materials.size(); ++i) {
     const Material& m = materials[i];
@@ -83,8 +84,8 @@ void Scene::validate() const {
   for (size_t i = 0; i < cameras.size(); ++i) {
     const CameraDesc& c = cameras[i];
     if (!(c.fov_y_degrees > 0.0f && c.fov_y_degrees < 180.0f))
-      throwInput("{}: fov_y = {} is outside the allowed range (0, 180)", where("cameras", i, c.name),
-                 c.fov_y_degrees);
+      throwInput("{}: fov_y = {} is outside the allowed range (0, 180)",
+                 where("cameras", i, c.name), c.fov_y_degrees);
     if (!(c.near_plane > 0.0f && c.far_plane > c.near_plane))
       throwInput("{}: near = {}, far = {}: need 0 < near < far", where("cameras", i, c.name),
                  c.near_plane, c.far_plane);

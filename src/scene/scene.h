@@ -22,11 +22,11 @@ struct Light {
 };
 
 struct EnvironmentDesc {
-  std::string image;             // equirectangular HDR/EXR/PNG; empty: procedural sky
-  float intensity = 1.0f;        // radiance scale
-  float rotation_degrees = 0.0f; // about +Y
-  float clamp = 0.0f;            // > 0: clamp radiance (tames HDR suns); 0: off
-  int cube_size = 0;             // cube-map face size; 0: automatic
+  std::string image;              // equirectangular HDR/EXR/PNG; empty: procedural sky
+  float intensity = 1.0f;         // radiance scale
+  float rotation_degrees = 0.0f;  // about +Y
+  float clamp = 0.0f;             // > 0: clamp radiance (tames HDR suns); 0: off
+  int cube_size = 0;              // cube-map face size; 0: automatic
 };
 
 struct TextureImage {

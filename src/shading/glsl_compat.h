@@ -23,9 +23,9 @@
 // Angle brackets: the GLSL include resolver skips them (C++-only includes).
 #include <core/math.h>
 
-#define SHARED_BEGIN    \
+#define SHARED_BEGIN          \
   namespace mirage::shading { \
-  using namespace glm;  \
+  using namespace glm;        \
   using uint = unsigned int;
 #define SHARED_END }
 #define SHARED_FN inline

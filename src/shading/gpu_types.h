@@ -13,10 +13,10 @@
 #define MIRAGE_BIND_METHOD 3     // UBO owned by the method being run
 #define MIRAGE_BIND_METHOD_SSBO 4
 // Texture units.
-#define MIRAGE_UNIT_ENVIRONMENT 0     // the scene's distant environment (cube map)
-#define MIRAGE_UNIT_ALBEDO 1          // the drawn instance's albedo texture
-#define MIRAGE_UNIT_NORMAL_MAP 2      // the drawn instance's normal map
-#define MIRAGE_UNIT_METHOD 4          // first unit a method may use
+#define MIRAGE_UNIT_ENVIRONMENT 0  // the scene's distant environment (cube map)
+#define MIRAGE_UNIT_ALBEDO 1       // the drawn instance's albedo texture
+#define MIRAGE_UNIT_NORMAL_MAP 2   // the drawn instance's normal map
+#define MIRAGE_UNIT_METHOD 4       // first unit a method may use
 
 // Material kinds (MaterialData.kind.x).
 #define MIRAGE_MATERIAL_DIFFUSE 0

@@ -62,7 +62,9 @@ SHARED_FN vec3 shade_reflector(MaterialData m, float cos_theta, float distance, 
 }
 
 // The colour of a reflector when no reflection is computed (method `none`, last bounce).
-SHARED_FN vec3 reflector_base(MaterialData m) { return vec3(m.albedo); }
+SHARED_FN vec3 reflector_base(MaterialData m) {
+  return vec3(m.albedo);
+}
 
 // Mirror reflection of incident direction `incident` (pointing at the surface) about `normal`.
 SHARED_FN vec3 reflect_direction(vec3 incident, vec3 normal) {

@@ -41,7 +41,9 @@ struct BadInput {
   std::string expected;  // a piece of the message
 };
 
-void PrintTo(const BadInput& b, std::ostream* os) { *os << "mirage " << b.args; }
+void PrintTo(const BadInput& b, std::ostream* os) {
+  *os << "mirage " << b.args;
+}
 
 class CliBadInput : public ::testing::TestWithParam<BadInput> {};
 
@@ -57,25 +59,33 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         BadInput{"render --scene sphere-over-checker --method nope -o x.png", "allowed: none"},
         BadInput{"render --scene no-such-scene --method envmap -o x.png", "no such scene"},
-        BadInput{"render --scene sphere-over-checker --method envmap --size 0x10 -o x.png", "1..16384"},
-        BadInput{"render --scene sphere-over-checker --method envmap --size banana -o x.png", "WxH"},
+        BadInput{"render --scene sphere-over-checker --method envmap --size 0x10 -o x.png",
+                 "1..16384"},
+        BadInput{"render --scene sphere-over-checker --method envmap --size banana -o x.png",
+                 "WxH"},
         BadInput{"render --scene sphere-over-checker --method envmap --order 99 -o x.png", "0..16"},
         BadInput{"render --scene sphere-over-checker --method envmap -o x.bmp", ".png, .exr"},
-        BadInput{"render --scene sphere-over-checker --method envmap --envmap-size 0 -o x.png", "8..2048"},
-        BadInput{"render --scene sphere-over-checker --method raytrace --spp 0 -o x.png", "1..4096"},
+        BadInput{"render --scene sphere-over-checker --method envmap --envmap-size 0 -o x.png",
+                 "8..2048"},
+        BadInput{"render --scene sphere-over-checker --method raytrace --spp 0 -o x.png",
+                 "1..4096"},
         BadInput{"render --scene spheres9 --reflectors 12 --method envmap -o x.png", "1..9"},
         BadInput{"render --scene sphere-over-checker --method envmap --tonemap x -o x.png", "aces"},
-        BadInput{"render --scene sphere-over-checker --method envmap --mip maybe -o x.png", "on|off"},
-        BadInput{"render --scene sphere-over-checker --method envmap --camera nope -o x.png", "no camera"},
+        BadInput{"render --scene sphere-over-checker --method envmap --mip maybe -o x.png",
+                 "on|off"},
+        BadInput{"render --scene sphere-over-checker --method envmap --camera nope -o x.png",
+                 "no camera"},
         BadInput{"render --method envmap -o x.png", "--scene"},
         BadInput{"render --scene sphere-over-checker --method envmap --bogus 1 -o x.png", "bogus"},
         BadInput{"compare --scene sphere-over-checker --methods envmap,,none -o d", "empty method"},
-        BadInput{"compare --scene sphere-over-checker --methods envmap,nope -o d", "unknown method 'nope'"},
+        BadInput{"compare --scene sphere-over-checker --methods envmap,nope -o d",
+                 "unknown method 'nope'"},
         BadInput{"bench --scene sphere-over-checker --frames 0 --json b.json", "1..1000000"},
         BadInput{"frobnicate", "frobnicate"}));
 
 TEST(Cli, HelpExitsZero) {
-  for (const char* cmd : {"--help", "scenes --help", "render --help", "compare --help", "bench --help"}) {
+  for (const char* cmd :
+       {"--help", "scenes --help", "render --help", "compare --help", "bench --help"}) {
     Result r = run(cmd);
     EXPECT_EQ(r.code, 0) << cmd << "\n" << r.output;
     EXPECT_NE(r.output.find("Usage"), std::string::npos) << cmd;
@@ -91,8 +101,9 @@ TEST(Cli, ScenesListsTheBuiltInScenesOnStdout) {
 
 TEST(Cli, NoOpenGLDriverExitsWithThree) {
   auto dir = tempDir("nogl");
-  Result r = run("render --scene sphere-over-checker --method envmap -o " + (dir / "x.png").string(),
-                 "MIRAGE_NO_GL=1");
+  Result r =
+      run("render --scene sphere-over-checker --method envmap -o " + (dir / "x.png").string(),
+          "MIRAGE_NO_GL=1");
   EXPECT_EQ(r.code, 3) << r.output;
   EXPECT_NE(r.output.find("OpenGL 4.5"), std::string::npos) << r.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
@@ -104,30 +115,35 @@ TEST_F(CliWithGl, RenderWritesPngAndExr) {
   auto dir = tempDir("render");
   for (const char* ext : {".png", ".exr"}) {
     auto out = dir / (std::string("img") + ext);
-    Result r = run("render --scene sphere-over-checker --method envmap --size 96x64 -o " + out.string());
+    Result r =
+        run("render --scene sphere-over-checker --method envmap --size 96x64 -o " + out.string());
     EXPECT_EQ(r.code, 0) << r.output;
     EXPECT_GT(std::filesystem::file_size(out), 100u);
   }
   // Nothing but the outputs is left behind (temporary files are renamed or removed).
   int files = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) files += entry.is_regular_file();
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    files += entry.is_regular_file();
   EXPECT_EQ(files, 2);
 }
 
 TEST_F(CliWithGl, CompareWritesTheReport) {
   auto dir = tempDir("compare");
-  Result r = run("compare --scene sphere-over-checker --methods all --size 120x86 -o " + dir.string());
+  Result r =
+      run("compare --scene sphere-over-checker --methods all --size 120x86 -o " + dir.string());
   ASSERT_EQ(r.code, 0) << r.output;
-  for (const char* f : {"index.html", "metrics.json", "raytrace.png", "envmap.png", "envmap.err.png",
-                        "none.png", "envmap-infinite.png"})
+  for (const char* f : {"index.html", "metrics.json", "raytrace.png", "envmap.png",
+                        "envmap.err.png", "none.png", "envmap-infinite.png"})
     EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
 }
 
 TEST_F(CliWithGl, BenchWritesJson) {
   auto dir = tempDir("bench");
   auto json = dir / "b.json";
-  Result r = run("bench --scene sphere-over-checker --methods none,envmap,raytrace --frames 3 "
-                 "--warmup 1 --size 96x64 --json " + json.string());
+  Result r =
+      run("bench --scene sphere-over-checker --methods none,envmap,raytrace --frames 3 "
+          "--warmup 1 --size 96x64 --json " +
+          json.string());
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_TRUE(std::filesystem::exists(json));
 }

@@ -23,7 +23,8 @@ TEST(View, CentreRayLooksAtTheTarget) {
 
 TEST(View, ProjectInvertsPrimaryRays) {
   View view(testCamera(), {300, 200});
-  for (vec2 p : {vec2(0.5f, 0.5f), vec2(299.5f, 10.5f), vec2(150.0f, 199.5f), vec2(42.25f, 77.75f)}) {
+  for (vec2 p :
+       {vec2(0.5f, 0.5f), vec2(299.5f, 10.5f), vec2(150.0f, 199.5f), vec2(42.25f, 77.75f)}) {
     Ray r = view.primaryRay(p.x, p.y);
     vec3 q = view.project(r.at(7.0f));
     EXPECT_NEAR(q.x, p.x, 1e-3f);

@@ -35,7 +35,8 @@ TEST(Metrics, SsimIsOneForEqualImagesAndDropsWithNoise) {
   EXPECT_NEAR(meanOver(ssimMap(a, a)), 1.0, 1e-6);
   Image b = a;
   for (int y = 0; y < 32; ++y)
-    for (int x = 0; x < 32; ++x) b(x, y).x = std::clamp(b(x, y).x + ((x * 7 + y * 3) % 5 - 2) * 0.3f, 0.0f, 1.0f);
+    for (int x = 0; x < 32; ++x)
+      b(x, y).x = std::clamp(b(x, y).x + ((x * 7 + y * 3) % 5 - 2) * 0.3f, 0.0f, 1.0f);
   double s = meanOver(ssimMap(a, b));
   EXPECT_LT(s, 0.95);
   EXPECT_GT(s, 0.0);

@@ -96,12 +96,14 @@ TEST_F(BaselineImages, HigherOrderChangesOnlyReflectorPixels) {
     RenderedFrame fb = renderer.read();
     size_t changed_reflector = 0, changed_other = 0;
     for (size_t i = 0; i < fa.color.pixelCount(); ++i) {
-      bool changed = glm::any(glm::greaterThan(glm::abs(vec3(fa.color.data()[i]) - vec3(fb.color.data()[i])), vec3(1e-5f)));
+      bool changed = glm::any(glm::greaterThan(
+          glm::abs(vec3(fa.color.data()[i]) - vec3(fb.color.data()[i])), vec3(1e-5f)));
       if (!changed) continue;
       (fa.ids.data()[i] != 0 ? changed_reflector : changed_other)++;
     }
     EXPECT_EQ(changed_other, 0u) << method;
-    EXPECT_GT(changed_reflector, 100u) << method << ": mirror-in-mirror paths must appear at order 3";
+    EXPECT_GT(changed_reflector, 100u)
+        << method << ": mirror-in-mirror paths must appear at order 3";
   }
 }
 
@@ -118,7 +120,7 @@ TEST_F(BaselineImages, EnvmapRecapturesOnlyWhenTheSceneChanges) {
   CameraDesc cam = scene.camera();
   renderer.render(*m, View(cam, size), 0.0f, settings);
   double first = m->stats().at("cube_captures");
-  EXPECT_EQ(first, 1.0);  // one reflector, one pass
+  EXPECT_EQ(first, 1.0);   // one reflector, one pass
   cam.position.x += 2.0f;  // a view change alone
   renderer.render(*m, View(cam, size), 0.0f, settings);
   renderer.render(*m, View(cam, size), 0.0f, settings);

@@ -26,7 +26,8 @@ TEST_F(CubeCaptureTest, BackgroundCaptureReproducesTheEnvironment) {
     passes.drawBackground();
   });
   std::vector<vec4> pixels(size_t(size * size * 6));
-  glGetTextureImage(cube.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(pixels.size() * sizeof(vec4)), pixels.data());
+  glGetTextureImage(cube.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(pixels.size() * sizeof(vec4)),
+                    pixels.data());
   double worst = 0.0, sum = 0.0;
   for (int f = 0; f < 6; ++f)
     for (int y = 0; y < size; ++y)

@@ -30,7 +30,8 @@ bool glRequired() {
 void GlTest::SetUp() {
   std::string why;
   if (glContext(&why)) return;
-  if (glRequired()) FAIL() << "MIRAGE_REQUIRE_GL is set but there is no OpenGL 4.5 context: " << why;
+  if (glRequired())
+    FAIL() << "MIRAGE_REQUIRE_GL is set but there is no OpenGL 4.5 context: " << why;
   GTEST_SKIP() << "no OpenGL 4.5 driver: " << why;
 }
 

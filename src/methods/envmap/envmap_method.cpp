@@ -17,7 +17,8 @@ class EnvmapMethod final : public Method {
         program_(gpu::Program::graphics(
             "render/shaders/scene.vert", "methods/envmap/envmap.frag",
             infinite ? std::vector<std::string>{"ENVMAP_INFINITE 1"} : std::vector<std::string>{})),
-        base_program_(gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")) {}
+        base_program_(
+            gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")) {}
 
   const MethodInfo& info() const override { return info_; }
 

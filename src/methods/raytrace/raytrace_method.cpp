@@ -27,7 +27,8 @@ class RaytraceMethod final : public Method {
     frame.beginPart(gpu::Part::kDirect);
     TraceResult result = tracer_.render(frame.view, {frame.settings.order, spp_});
     // Primary and reflected rays run interleaved per tile; the tracer measured the split.
-    if (frame.timer) frame.timer->shift(gpu::Part::kDirect, gpu::Part::kReflect, result.stats.reflect_ms);
+    if (frame.timer)
+      frame.timer->shift(gpu::Part::kDirect, gpu::Part::kReflect, result.stats.reflect_ms);
     frame.target.upload(result.color, result.ids);
     last_ = result.stats;
     primary_rays_ += result.stats.primary_rays;
