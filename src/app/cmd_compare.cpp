@@ -1,6 +1,6 @@
 // `mirage compare`: every chosen method against the ray-traced reference on one view: images,
-// error maps, PSNR/SSIM (all pixels and reflector pixels) and times, as DIR/index.html and
-// DIR/metrics.json.
+// absolute-error and FLIP maps, PSNR/SSIM/FLIP (all pixels and reflector pixels) and times, as
+// DIR/index.html and DIR/metrics.json.
 #include <filesystem>
 
 #include <spdlog/spdlog.h>
@@ -8,6 +8,7 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "core/error.h"
+#include "eval/flip.h"
 #include "eval/heatmap.h"
 #include "eval/report.h"
 #include "methods/frame.h"
@@ -69,6 +70,7 @@ int runCompare(const CompareArgs& args) {
   report.cpu = cpuDescription();
   report.triangles = scene.triangleCount();
   report.heatmap_max = args.heatmap_max;
+  report.flip_ppd = FlipViewing{}.pixelsPerDegree();
   report.tonemap = fmt::format("{}, exposure {}", toneMapName(display.tonemap), display.exposure);
 
   Image reference_display;
@@ -76,7 +78,8 @@ int runCompare(const CompareArgs& args) {
   std::filesystem::path dir(args.output);
   for (const std::string& name : methods) {
     auto method = renderer.createMethod(name, args.params, settings);
-    gpu::Clock clock = method->info().gpu ? gpu::defaultClock(context->info().software) : gpu::Clock::kWall;
+    gpu::Clock clock =
+        method->info().gpu ? gpu::defaultClock(context->info().software) : gpu::Clock::kWall;
     Rendered r = renderTwice(renderer, *method, view, args.scene.time, settings, clock);
     Image shown = toDisplay(r.frame.color, display);
     if (name == "raytrace") {
@@ -86,7 +89,8 @@ int runCompare(const CompareArgs& args) {
     MethodReport m;
     m.name = name;
     m.description = method->info().description;
-    m.metrics = compareImages(shown, reference_display, mask);
+    Image2D<float> flip;
+    m.metrics = compareImages(shown, reference_display, mask, &flip);
     m.ms = r.ms;
     m.first_ms = r.first_ms;
     m.order_rendered = method->orderRendered(settings.order);
@@ -95,11 +99,17 @@ int runCompare(const CompareArgs& args) {
     m.stats = method->stats();
     m.image = name + ".png";
     m.error_image = name + ".err.png";
+    m.flip_image = name + ".flip.png";
     writePng((dir / m.image).string(), shown);
     writePng((dir / m.error_image).string(),
              heatmap(absoluteError(shown, reference_display), args.heatmap_max));
-    spdlog::info("{:>16}: PSNR {:6.2f} dB (reflector {:6.2f}), SSIM {:.4f}, {:8.2f} ms", name,
-                 m.metrics.psnr, m.metrics.psnr_reflector, m.metrics.ssim, m.ms);
+    // FLIP is in [0, 1] by construction: a fixed scale, comparable across methods and reports.
+    writePng((dir / m.flip_image).string(), heatmap(flip, 1.0f));
+    spdlog::info(
+        "{:>16}: PSNR {:6.2f} dB (reflector {:6.2f}), SSIM {:.4f}, FLIP {:.4f} (reflector {:.4f}), "
+        "{:8.2f} ms",
+        name, m.metrics.psnr, m.metrics.psnr_reflector, m.metrics.ssim, m.metrics.flip,
+        m.metrics.flip_reflector, m.ms);
     report.methods.push_back(std::move(m));
   }
   writeCompareReport(args.output, report);
@@ -121,8 +131,9 @@ Command addCompareCommand(CLI::App& parent) {
       ->capture_default_str();
   addFrameOptions(cmd.app, args->frame);
   cmd.app->add_option("-o,--output", args->output, "report directory")->required();
-  cmd.app->add_option("--heatmap-max", args->heatmap_max,
-                      "error shown as the brightest heat-map colour (display units, > 0)")
+  cmd.app
+      ->add_option("--heatmap-max", args->heatmap_max,
+                   "error shown as the brightest heat-map colour (display units, > 0)")
       ->capture_default_str();
   addMethodParamOptions(cmd.app, args->params);
   cmd.run = [args] { return runCompare(*args); };

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "core/error.h"
+#include "eval/flip.h"
 
 namespace mirage {
 
@@ -17,7 +19,9 @@ void checkSameSize(const Image& a, const Image& b) {
                  b.height());
 }
 
-float luma(const vec4& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
+float luma(const vec4& c) {
+  return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
+}
 
 // Separable Gaussian blur with clamped borders.
 Image2D<float> blur(const Image2D<float>& in, const std::vector<float>& kernel) {
@@ -32,7 +36,8 @@ Image2D<float> blur(const Image2D<float>& in, const std::vector<float>& kernel) 
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       double s = 0.0;
-      for (int k = -r; k <= r; ++k) s += kernel[size_t(k + r)] * tmp(x, std::clamp(y + k, 0, h - 1));
+      for (int k = -r; k <= r; ++k)
+        s += kernel[size_t(k + r)] * tmp(x, std::clamp(y + k, 0, h - 1));
       out(x, y) = float(s);
     }
   return out;
@@ -85,9 +90,10 @@ Image2D<float> ssimMap(const Image& a, const Image& b) {
   Image2D<float> map(w, h);
   for (size_t i = 0; i < map.pixelCount(); ++i) {
     double ux = mx.data()[i], uy = my.data()[i];
-    double vx = sxx.data()[i] - ux * ux, vy = syy.data()[i] - uy * uy, cxy = sxy.data()[i] - ux * uy;
-    map.data()[i] = float(((2 * ux * uy + c1) * (2 * cxy + c2)) /
-                          ((ux * ux + uy * uy + c1) * (vx + vy + c2)));
+    double vx = sxx.data()[i] - ux * ux, vy = syy.data()[i] - uy * uy,
+           cxy = sxy.data()[i] - ux * uy;
+    map.data()[i] =
+        float(((2 * ux * uy + c1) * (2 * cxy + c2)) / ((ux * ux + uy * uy + c1) * (vx + vy + c2)));
   }
   return map;
 }
@@ -109,13 +115,18 @@ size_t countNonZero(const IdImage& mask) {
   return n;
 }
 
-ImageMetrics compareImages(const Image& test, const Image& reference, const IdImage& mask) {
+ImageMetrics compareImages(const Image& test, const Image& reference, const IdImage& mask,
+                           Image2D<float>* flip_map) {
   ImageMetrics m;
   m.psnr = psnrFromMse(meanSquaredError(test, reference));
   m.psnr_reflector = psnrFromMse(meanSquaredError(test, reference, &mask));
   Image2D<float> map = ssimMap(test, reference);
   m.ssim = meanOver(map);
   m.ssim_reflector = meanOver(map, &mask);
+  Image2D<float> flip = flipMap(test, reference);
+  m.flip = meanOver(flip);
+  m.flip_reflector = meanOver(flip, &mask);
+  if (flip_map) *flip_map = std::move(flip);
   m.reflector_pixels = countNonZero(mask);
   return m;
 }

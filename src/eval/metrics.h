@@ -22,12 +22,15 @@ double meanOver(const Image2D<float>& map, const IdImage* mask = nullptr);
 struct ImageMetrics {
   double psnr = 0.0, psnr_reflector = 0.0;  // +inf when equal
   double ssim = 0.0, ssim_reflector = 0.0;
+  double flip = 0.0, flip_reflector = 0.0;  // mean LDR-FLIP (eval/flip.h), default viewing
   size_t reflector_pixels = 0;
 };
 
 // `reflector_mask` marks reflector pixels (the reference's reflector-ID buffer). Where it has no
-// reflector pixel, the reflector figures are NaN.
-ImageMetrics compareImages(const Image& test, const Image& reference, const IdImage& reflector_mask);
+// reflector pixel, the reflector figures are NaN. `flip_map`, if given, receives the FLIP map the
+// FLIP figures are the means of (the report draws it).
+ImageMetrics compareImages(const Image& test, const Image& reference, const IdImage& reflector_mask,
+                           Image2D<float>* flip_map = nullptr);
 
 size_t countNonZero(const IdImage& mask);
 

@@ -1,5 +1,7 @@
-// The comparison report of `mirage compare`: DIR/index.html (images side by side, error maps,
-// metrics table) and DIR/metrics.json, both written atomically.
+// The comparison report of `mirage compare`: DIR/index.html (the reference, then every method's
+// image, absolute-error map and FLIP map with their metrics, and a sortable metrics table) and
+// DIR/metrics.json, both written atomically. The HTML is self-contained: it loads nothing but
+// the report's own PNGs.
 #pragma once
 
 #include <map>
@@ -20,8 +22,9 @@ struct MethodReport {
   int order_rendered = 0;  // reflection order the method produced
   std::string note;        // e.g. "order 1 only"
   std::map<std::string, double> stats;
-  std::string image;       // file names relative to the report directory
+  std::string image;  // file names relative to the report directory
   std::string error_image;
+  std::string flip_image;
 };
 
 struct CompareReport {
@@ -30,16 +33,18 @@ struct CompareReport {
   ivec2 size{0};
   int order = 0;
   std::string reference = "raytrace";
-  std::string device;       // GL renderer
-  std::string cpu;          // CPU model
+  std::string device;  // GL renderer
+  std::string cpu;     // CPU model
   size_t triangles = 0;
-  float heatmap_max = 0.0f; // error value drawn as the brightest heat-map colour
+  float heatmap_max = 0.0f;  // error value drawn as the brightest heat-map colour
+  float flip_ppd = 0.0f;     // pixels per degree the FLIP figures assume
   std::string tonemap;
   std::vector<MethodReport> methods;
 };
 
 // JSON value for a metric: numbers, null for NaN (no such pixels) and for +inf (identical).
 std::string metricsJson(const CompareReport& report);
+// The first method named `report.reference` is shown as the reference; the others are ranked.
 std::string reportHtml(const CompareReport& report);
 void writeCompareReport(const std::string& directory, const CompareReport& report);
 
