@@ -23,6 +23,8 @@ namespace mirage {
 struct LoadLimits {
   uint64_t max_vertices = 50'000'000;
   uint64_t max_triangles = 100'000'000;
+  // Gzip-compressed files (.ply.gz) may not inflate to more than this many bytes.
+  uint64_t max_decompressed_bytes = uint64_t(4) << 30;
 };
 
 // A model file's content. Formats without materials (PLY, STL) give no materials and

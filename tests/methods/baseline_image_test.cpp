@@ -66,6 +66,34 @@ TEST_F(BaselineImages, GpuShadingEqualsCpuShading) {
   EXPECT_TRUE(psnrAtLeast(p.gpu, p.cpu, 35.0, nullptr, "none-vs-order0"));
 }
 
+TEST_F(BaselineImages, TexturesAreSampledAlikeOnGpuAndCpu) {
+  // An 8x8 texture whose rows and columns all differ, magnified on a quad seen from above:
+  // the GPU and the ray tracer must agree on its orientation (uv (0, 0) = bottom-left).
+  Scene scene;
+  scene.name = "textured-quad";
+  TextureImage tex;
+  tex.name = "gradient";
+  tex.image = Image(8, 8);
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x) tex.image(x, y) = vec4(float(x) / 7.0f, float(y) / 7.0f, 0.3f, 1.0f);
+  scene.textures.push_back(tex);
+  Material m = Material::diffuse("textured", vec3(1.0f));
+  m.albedo_texture = 0;
+  int mesh = addMesh(scene, procedural::quad(2.0f, 2.0f, 0.5f));
+  int mat = addMaterial(scene, m);
+  addInstance(scene, "quad", mesh, mat, {});
+  CameraDesc c;
+  c.position = {0.0f, 3.0f, 0.001f};
+  c.target = {0.0f, 0.0f, 0.0f};
+  c.fov_y_degrees = 30.0f;
+  scene.cameras.push_back(c);
+  scene.validate();
+  FrameSettings settings;
+  settings.order = 0;
+  Pair p = renderBoth(scene, "none", {160, 160}, settings);
+  EXPECT_TRUE(mostPixelsWithin(p.gpu, p.cpu, 3.0f / 255.0f, 0.01, nullptr, "texture"));
+}
+
 TEST_F(BaselineImages, EnvmapApproximatesRaytraceOnSphereOverChecker) {
   // A reflection probe ignores parallax: it must resemble the truth without equalling it.
   Scene scene = makeBuiltinScene("sphere-over-checker");

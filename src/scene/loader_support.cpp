@@ -1,0 +1,111 @@
+#include "scene/loader_support.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+
+#include "core/error.h"
+
+namespace mirage::loader {
+
+namespace {
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return s;
+}
+
+}  // namespace
+
+std::string lowerExtension(const std::string& path) {
+  std::filesystem::path p(path);
+  std::string ext = lower(p.extension().string());
+  if (ext == ".gz") ext = lower(p.stem().extension().string()) + ext;
+  return ext;
+}
+
+std::string fileStem(const std::string& path) {
+  std::filesystem::path p = std::filesystem::path(path).filename();
+  if (lower(p.extension().string()) == ".gz") p = p.stem();
+  return p.stem().string();
+}
+
+std::string folderOf(const std::string& path) {
+  std::string dir = std::filesystem::path(path).parent_path().string();
+  return dir.empty() ? dir : dir + "/";
+}
+
+std::string readWholeFile(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throwInput("{}: is a folder, not a file", path);
+  std::unique_ptr<FILE, int (*)(FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!f) throwInput("{}: cannot read the file: {}", path, std::strerror(errno));
+  std::string out;
+  uintmax_t size = std::filesystem::file_size(path, ec);
+  if (!ec) out.resize(size_t(size));
+  size_t got = std::fread(out.data(), 1, out.size(), f.get());
+  out.resize(got);
+  // Files that grew meanwhile, or whose size the file system does not know (pipes): read on.
+  char buffer[65536];
+  while (size_t n = std::fread(buffer, 1, sizeof(buffer), f.get())) out.append(buffer, n);
+  if (std::ferror(f.get())) throwInput("{}: I/O error while reading the file", path);
+  return out;
+}
+
+void checkLimits(const std::string& file, const std::string& what, uint64_t vertices,
+                 uint64_t triangles, const LoadLimits& limits) {
+  if (vertices > limits.max_vertices)
+    throwInput("{}: {} has {} vertices; at most {} are allowed (LoadLimits::max_vertices)", file,
+               what, vertices, limits.max_vertices);
+  if (triangles > limits.max_triangles)
+    throwInput("{}: {} has {} triangles; at most {} are allowed (LoadLimits::max_triangles)", file,
+               what, triangles, limits.max_triangles);
+}
+
+int TextureList::get(const std::string& key, Encoding encoding,
+                     const std::function<Image()>& decode) {
+  auto [it, inserted] = index_.try_emplace({key, encoding}, int(textures_.size()));
+  if (!inserted) return it->second;
+  try {
+    TextureImage t;
+    t.name = key;
+    t.image = decode();
+    t.srgb = encoding == Encoding::kSrgb;
+    textures_.push_back(std::move(t));
+  } catch (...) {
+    index_.erase(it);
+    throw;
+  }
+  return it->second;
+}
+
+LoadedModel singleMeshModel(Mesh mesh) {
+  LoadedModel model;
+  model.meshes.push_back(std::move(mesh));
+  model.mesh_material.push_back(-1);
+  model.mesh_transform.push_back(mat4(1.0f));
+  return model;
+}
+
+bool repairNormals(Mesh& mesh) {
+  if (mesh.normals.size() != mesh.positions.size()) {
+    mesh.computeNormals();
+    return true;
+  }
+  for (vec3& n : mesh.normals) {
+    float len = glm::length(n);
+    if (!(len > 0.0f) || !std::isfinite(len)) {
+      mesh.computeNormals();
+      return true;
+    }
+    n /= len;
+  }
+  return false;
+}
+
+}  // namespace mirage::loader

@@ -1,0 +1,267 @@
+// Wavefront OBJ through tinyobjloader, with the .mtl materials.
+//
+// Grouping: one Mesh per (shape, material) pair — each `o`/`g` shape is split by its `usemtl`
+// materials. Shapes stay apart because every reflector needs its own mesh (envmap captures a
+// probe at the centre of each reflector's bounds: two mirrors merged into one mesh would share a
+// probe between them), and a mesh can carry only one material.
+//
+// Reflectors (OBJ has no mirror flag; these are the MTL conventions that mean one):
+//   illum 3 ("reflection on, ray trace on")   perfect mirror: base Kd, tint Ks, f0 1
+//   illum 5 ("Fresnel on, ray trace on")      Fresnel mirror: base Kd, f0 max(Ks), tint Ks / f0
+//   Ks >= 0.95, Ns >= 1000 and Kd <= 0.05     perfect mirror (exporters' mirrors without illum)
+//   Pm 1 and Pr 0 (the PBR extension)         perfect mirror as in glTF: base 0.05 grey, tint Kd
+// A black Ks gives a white tint: "illum 3" alone means a plain mirror.
+// Everything else is diffuse: albedo Kd times map_Kd (sRGB). map_bump/bump/norm -> normal map.
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unordered_map>
+
+#include <spdlog/spdlog.h>
+#include <tiny_obj_loader.h>
+
+#include "core/error.h"
+#include "scene/loader_support.h"
+#include "scene/model_loader.h"
+
+namespace mirage {
+
+namespace {
+
+// Reads each mtllib file beside the .obj and remembers which file each material came from (for
+// messages and for resolving texture paths).
+class MtlReader : public tinyobj::MaterialReader {
+ public:
+  MtlReader(std::string folder, std::vector<std::string>& mtl_of)
+      : folder_(std::move(folder)), mtl_of_(mtl_of) {}
+  bool operator()(const std::string& file, std::vector<tinyobj::material_t>* materials,
+                  std::map<std::string, int>* names, std::string* warn, std::string* err) override {
+    std::string path = std::filesystem::path(file).is_absolute() ? file : folder_ + file;
+    std::ifstream in(path);
+    if (!in) {
+      if (warn) *warn += fmt::format("material file {} not found; default materials used\n", path);
+      return false;
+    }
+    tinyobj::LoadMtl(names, materials, &in, warn, err);
+    mtl_of_.resize(materials->size(), path);
+    return true;
+  }
+
+ private:
+  std::string folder_;
+  std::vector<std::string>& mtl_of_;
+};
+
+// Counts `v` and `f` lines without parsing them, to hold the limits before tinyobjloader
+// allocates anything.
+void preScan(const std::string& path, const std::string& text, const LoadLimits& limits) {
+  uint64_t v = 0, f = 0;
+  for (size_t pos = 0; pos < text.size();) {
+    size_t eol = text.find('\n', pos);
+    if (eol == std::string::npos) eol = text.size();
+    size_t i = text.find_first_not_of(" \t", pos);
+    if (i < eol && i + 1 < eol && (text[i + 1] == ' ' || text[i + 1] == '\t')) {
+      if (text[i] == 'v') ++v;
+      if (text[i] == 'f') ++f;
+    }
+    pos = eol + 1;
+  }
+  loader::checkLimits(path, "the file", v, f, limits);
+}
+
+struct Corner {
+  int v, n, t;
+  bool operator==(const Corner&) const = default;
+};
+struct CornerHash {
+  size_t operator()(const Corner& c) const {
+    uint64_t h = uint64_t(uint32_t(c.v)) * 0x9E3779B97F4A7C15ull;
+    h ^= uint64_t(uint32_t(c.n)) * 0xC2B2AE3D27D4EB4Full + (h >> 29);
+    h ^= uint64_t(uint32_t(c.t)) * 0x165667B19E3779F9ull + (h >> 32);
+    return size_t(h);
+  }
+};
+
+// One mesh under construction: the corners seen so far, de-duplicated by their index triple.
+struct Group {
+  int material = -1;
+  Mesh mesh;
+  std::unordered_map<Corner, uint32_t, CornerHash> index;
+  bool all_normals = true, any_uv = false;
+};
+
+float maxOf(const float* c) {
+  return std::max({c[0], c[1], c[2]});
+}
+float minOf(const float* c) {
+  return std::min({c[0], c[1], c[2]});
+}
+
+class ObjMaterials {
+ public:
+  ObjMaterials(const std::string& obj, const std::vector<std::string>& mtl_of, LoadedModel& model)
+      : obj_(obj), mtl_of_(mtl_of), textures_(model.textures) {}
+
+  Material convert(size_t index, const tinyobj::material_t& t) {
+    const std::string& mtl = index < mtl_of_.size() ? mtl_of_[index] : obj_;
+    Material m = Material::diffuse(t.name, vec3(0.8f));
+    vec3 kd(t.diffuse[0], t.diffuse[1], t.diffuse[2]);
+    vec3 ks(t.specular[0], t.specular[1], t.specular[2]);
+    const float ks_max = maxOf(t.specular);
+    bool illum_mirror = t.illum == 3 || t.illum == 5;
+    bool exported_mirror =
+        minOf(t.specular) >= 0.95f && t.shininess >= 1000.0f && maxOf(t.diffuse) <= 0.05f;
+    bool pbr_mirror = t.metallic >= 1.0f && t.roughness <= 0.0f;
+    if (illum_mirror || exported_mirror) {
+      m = Material::mirror(t.name, kd, ks_max > 0.0f ? ks : vec3(1.0f));
+      if (t.illum == 5 && ks_max > 0.0f) {
+        m.fresnel_f0 = std::min(1.0f, ks_max);
+        m.tint = ks / ks_max;
+      }
+    } else if (pbr_mirror) {
+      m = Material::mirror(t.name, vec3(0.05f), kd);  // as for glTF: the colour tints the mirror
+    } else {
+      m.albedo = kd;
+      if (!t.diffuse_texname.empty())
+        m.albedo_texture = texture(mtl, t.name, "map_Kd", t.diffuse_texname, Encoding::kSrgb);
+    }
+    const std::string& normal = !t.normal_texname.empty() ? t.normal_texname : t.bump_texname;
+    if (!normal.empty())
+      m.normal_map = texture(mtl, t.name, t.normal_texname.empty() ? "map_bump" : "norm", normal,
+                             Encoding::kLinear);
+    return m;
+  }
+
+ private:
+  int texture(const std::string& mtl, const std::string& material, const char* key,
+              std::string name, Encoding encoding) {
+    std::replace(name.begin(), name.end(), '\\', '/');  // paths written on Windows
+    std::string path =
+        std::filesystem::path(name).is_absolute() ? name : loader::folderOf(mtl) + name;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+      throwInput("{}: material {} {} {}: no such file {} (the materials of {})", mtl, material, key,
+                 name, path, obj_);
+    return textures_.get(path, encoding, [&] {
+      try {
+        return readImage(path, encoding);
+      } catch (const InputError& e) {
+        throwInput("{}: material {} {}: {}", mtl, material, key, e.what());
+      }
+    });
+  }
+
+  const std::string& obj_;
+  const std::vector<std::string>& mtl_of_;
+  loader::TextureList textures_;
+};
+
+}  // namespace
+
+LoadedModel loadObj(const std::string& path, const LoadLimits& limits) {
+  std::string text = loader::readWholeFile(path);
+  preScan(path, text, limits);
+
+  tinyobj::attrib_t attrib;
+  std::vector<tinyobj::shape_t> shapes;
+  std::vector<tinyobj::material_t> materials;
+  std::vector<std::string> mtl_of;
+  MtlReader mtl_reader(loader::folderOf(path), mtl_of);
+  std::string warn, err;
+  bool ok;
+  {
+    std::istringstream in(std::move(text));
+    ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, &mtl_reader,
+                          /*triangulate=*/false, /*default_vcols_fallback=*/false);
+  }
+  if (!ok || !err.empty()) {
+    while (!err.empty() && err.back() == '\n') err.pop_back();
+    throwInput("{}: {}", path, err.empty() ? "not a readable OBJ file" : err);
+  }
+  // Out-of-bounds indices are reported below as errors, with the face.
+  std::istringstream warnings(warn);
+  for (std::string line; std::getline(warnings, line);)
+    if (!line.empty() && line.find("out of bounds") == std::string::npos)
+      spdlog::warn("{}: {}", path, line);
+
+  const int nv = int(attrib.vertices.size() / 3), nn = int(attrib.normals.size() / 3),
+            nt = int(attrib.texcoords.size() / 2);
+  LoadedModel model;
+  ObjMaterials converter(path, mtl_of, model);
+  for (size_t i = 0; i < materials.size(); ++i)
+    model.materials.push_back(converter.convert(i, materials[i]));
+
+  uint64_t total_triangles = 0;
+  for (size_t s = 0; s < shapes.size(); ++s) {
+    const tinyobj::mesh_t& sm = shapes[s].mesh;
+    std::vector<Group> groups;
+    std::unordered_map<int, size_t> group_of;
+    size_t first = 0;
+    for (size_t f = 0; f < sm.num_face_vertices.size(); first += sm.num_face_vertices[f], ++f) {
+      size_t n = sm.num_face_vertices[f];
+      if (first + n > sm.indices.size())
+        throwInput("{}: shape {} face {} has corners past the index list", path, s, f);
+      int mat = f < sm.material_ids.size() ? sm.material_ids[f] : -1;
+      if (mat < -1 || mat >= int(materials.size())) mat = -1;
+      auto [it, added] = group_of.try_emplace(mat, groups.size());
+      if (added) groups.emplace_back().material = mat;
+      Group& g = groups[it->second];
+      uint32_t corner[256];
+      for (size_t k = 0; k < n; ++k) {
+        const tinyobj::index_t& c = sm.indices[first + k];
+        if (c.vertex_index < 0 || c.vertex_index >= nv || c.normal_index >= nn ||
+            c.texcoord_index >= nt)
+          throwInput(
+              "{}: shape '{}' face {} refers to v/vt/vn {}/{}/{}, but the file has {} v, {} "
+              "vt and {} vn (OBJ indices count from 1)",
+              path, shapes[s].name, f, c.vertex_index + 1, c.texcoord_index + 1, c.normal_index + 1,
+              nv, nt, nn);
+        auto [ci, fresh] = g.index.try_emplace({c.vertex_index, c.normal_index, c.texcoord_index},
+                                               uint32_t(g.mesh.positions.size()));
+        if (fresh) {
+          const float* p = &attrib.vertices[3 * size_t(c.vertex_index)];
+          g.mesh.positions.push_back({p[0], p[1], p[2]});
+          if (!isFinite(g.mesh.positions.back()))
+            throwInput("{}: vertex {} has a non-finite position", path, c.vertex_index + 1);
+          const float* nrm =
+              c.normal_index >= 0 ? &attrib.normals[3 * size_t(c.normal_index)] : nullptr;
+          g.mesh.normals.push_back(nrm ? vec3(nrm[0], nrm[1], nrm[2]) : vec3(0.0f));
+          const float* uv =
+              c.texcoord_index >= 0 ? &attrib.texcoords[2 * size_t(c.texcoord_index)] : nullptr;
+          g.mesh.uvs.push_back(uv ? vec2(uv[0], uv[1]) : vec2(0.0f));
+          g.all_normals = g.all_normals && nrm;
+          g.any_uv = g.any_uv || uv;
+        }
+        corner[k] = ci->second;
+      }
+      for (size_t k = 2; k < n; ++k)
+        g.mesh.triangles.push_back({corner[0], corner[k - 1], corner[k]});
+      total_triangles += n >= 3 ? n - 2 : 0;
+      loader::checkLimits(path, "the file", 0, total_triangles, limits);
+    }
+    for (Group& g : groups) {
+      if (g.mesh.triangles.empty()) continue;  // lines or points only
+      Mesh& m = g.mesh;
+      std::string shape = shapes[s].name.empty() ? fmt::format("shape{}", s) : shapes[s].name;
+      m.name = groups.size() > 1 && g.material >= 0
+                   ? shape + "/" + materials[size_t(g.material)].name
+                   : shape;
+      m.source = path;
+      if (!g.any_uv) m.uvs.clear();
+      if (!g.all_normals)
+        m.computeNormals();
+      else
+        loader::repairNormals(m);
+      if (g.material >= 0 && model.materials[size_t(g.material)].normal_map >= 0 && g.any_uv)
+        m.computeTangents();
+      model.meshes.push_back(std::move(m));
+      model.mesh_material.push_back(g.material);
+      model.mesh_transform.push_back(mat4(1.0f));
+    }
+  }
+  if (model.meshes.empty()) throwInput("{}: the OBJ file has no faces", path);
+  return model;
+}
+
+}  // namespace mirage

@@ -1,0 +1,197 @@
+#include "scene/ply_header.h"
+
+#include <charconv>
+#include <optional>
+
+#include "core/error.h"
+
+namespace mirage::ply {
+
+namespace {
+
+std::optional<Type> parseType(std::string_view s) {
+  // The names of the original specification, then the sized names most writers use today.
+  static constexpr std::pair<std::string_view, Type> kNames[] = {
+      {"char", Type::kInt8},      {"uchar", Type::kUint8},    {"short", Type::kInt16},
+      {"ushort", Type::kUint16},  {"int", Type::kInt32},      {"uint", Type::kUint32},
+      {"float", Type::kFloat32},  {"double", Type::kFloat64}, {"int8", Type::kInt8},
+      {"uint8", Type::kUint8},    {"int16", Type::kInt16},    {"uint16", Type::kUint16},
+      {"int32", Type::kInt32},    {"uint32", Type::kUint32},  {"float32", Type::kFloat32},
+      {"float64", Type::kFloat64}};
+  for (const auto& [n, t] : kNames)
+    if (n == s) return t;
+  return std::nullopt;
+}
+
+constexpr const char* kTypeNames =
+    "char/int8, uchar/uint8, short/int16, ushort/uint16, int/int32, uint/uint32, float/float32, "
+    "double/float64";
+
+std::vector<std::string_view> tokens(std::string_view line) {
+  std::vector<std::string_view> out;
+  size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    size_t j = i;
+    while (j < line.size() && line[j] != ' ' && line[j] != '\t') ++j;
+    if (j > i) out.push_back(line.substr(i, j - i));
+    i = j;
+  }
+  return out;
+}
+
+}  // namespace
+
+size_t typeSize(Type t) {
+  switch (t) {
+    case Type::kInt8:
+    case Type::kUint8:
+      return 1;
+    case Type::kInt16:
+    case Type::kUint16:
+      return 2;
+    case Type::kInt32:
+    case Type::kUint32:
+    case Type::kFloat32:
+      return 4;
+    case Type::kFloat64:
+      return 8;
+  }
+  return 0;
+}
+
+bool isInteger(Type t) {
+  return t != Type::kFloat32 && t != Type::kFloat64;
+}
+
+int Element::find(std::string_view property) const {
+  for (size_t i = 0; i < properties.size(); ++i)
+    if (properties[i].name == property) return int(i);
+  return -1;
+}
+
+uint64_t Element::minBytes(Format format) const {
+  uint64_t n = 0;
+  for (const Property& p : properties)
+    n += format == Format::kAscii ? 2 : typeSize(p.is_list ? p.count_type : p.type);
+  return n;
+}
+
+const Element* Header::find(std::string_view element) const {
+  for (const Element& e : elements)
+    if (e.name == element) return &e;
+  return nullptr;
+}
+
+Header parseHeader(const std::string& name, std::string_view bytes) {
+  Header h;
+  bool have_format = false;
+  int line_no = 0;
+  size_t pos = 0;
+  auto fail = [&](std::string_view msg) { throwInput("{}: line {}: {}", name, line_no, msg); };
+  for (;;) {
+    if (pos >= bytes.size()) {
+      if (line_no == 0) throwInput("{}: empty file (expected a PLY header)", name);
+      throwInput("{}: the PLY header has no end_header line (the file ends at line {})", name,
+                 line_no);
+    }
+    size_t eol = bytes.find('\n', pos);
+    size_t next = eol == std::string_view::npos ? bytes.size() : eol + 1;
+    std::string_view line = bytes.substr(pos, next - pos);
+    while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.remove_suffix(1);
+    pos = next;
+    ++line_no;
+    if (line_no == 1) {
+      if (line != "ply") throwInput("{}: not a PLY file (the first line must be 'ply')", name);
+      continue;
+    }
+    std::vector<std::string_view> t = tokens(line);
+    if (t.empty()) continue;
+    std::string_view key = t[0];
+    if (key == "comment" || key == "obj_info") continue;
+    if (key == "end_header") break;
+    if (key == "format") {
+      if (have_format) fail("a second 'format' line");
+      if (t.size() != 3) fail("expected 'format ascii|binary_little_endian|binary_big_endian 1.0'");
+      if (t[1] == "ascii")
+        h.format = Format::kAscii;
+      else if (t[1] == "binary_little_endian")
+        h.format = Format::kBinaryLittleEndian;
+      else if (t[1] == "binary_big_endian")
+        h.format = Format::kBinaryBigEndian;
+      else
+        fail(
+            fmt::format("unknown format '{}' (expected ascii, binary_little_endian or "
+                        "binary_big_endian)",
+                        t[1]));
+      if (t[2] != "1.0") fail(fmt::format("unsupported PLY version '{}' (expected 1.0)", t[2]));
+      have_format = true;
+    } else if (key == "element") {
+      if (t.size() != 3) fail("expected 'element <name> <count>'");
+      Element e;
+      e.name = std::string(t[1]);
+      e.line = line_no;
+      auto r = std::from_chars(t[2].data(), t[2].data() + t[2].size(), e.count);
+      if (r.ec != std::errc() || r.ptr != t[2].data() + t[2].size())
+        fail(
+            fmt::format("element {}: count '{}' is not a number in 0..{}", t[1], t[2], UINT64_MAX));
+      if (h.find(e.name)) fail(fmt::format("element '{}' is declared twice", t[1]));
+      h.elements.push_back(std::move(e));
+    } else if (key == "property") {
+      if (h.elements.empty()) fail("a property before any element");
+      Property p;
+      if (t.size() == 5 && t[1] == "list") {
+        auto count_type = parseType(t[2]);
+        auto item_type = parseType(t[3]);
+        if (!count_type || !item_type)
+          fail(fmt::format("unknown type '{}' (expected one of {})", count_type ? t[3] : t[2],
+                           kTypeNames));
+        if (!isInteger(*count_type))
+          fail(fmt::format("list {}: the length type {} must be an integer type", t[4], t[2]));
+        p.is_list = true;
+        p.count_type = *count_type;
+        p.type = *item_type;
+        p.name = std::string(t[4]);
+      } else if (t.size() == 3 && t[1] != "list") {
+        auto type = parseType(t[1]);
+        if (!type) fail(fmt::format("unknown type '{}' (expected one of {})", t[1], kTypeNames));
+        p.type = *type;
+        p.name = std::string(t[2]);
+      } else {
+        fail("expected 'property <type> <name>' or 'property list <type> <type> <name>'");
+      }
+      h.elements.back().properties.push_back(std::move(p));
+    } else {
+      fail(
+          fmt::format("unknown header keyword '{}' (expected format, element, property, "
+                      "comment, obj_info or end_header)",
+                      key.substr(0, 40)));
+    }
+  }
+  if (!have_format) throwInput("{}: the PLY header has no 'format' line", name);
+  h.data_offset = pos;
+  h.data_line = line_no + 1;
+  return h;
+}
+
+void checkDataSize(const std::string& name, const Header& h, size_t size) {
+  const size_t pos = h.data_offset;
+  // Fail fast on counts the data cannot hold: a 200-byte file claiming 10^12 vertices is refused
+  // here, before anything is allocated or parsed.
+  uint64_t available = size - pos;
+  if (h.format == Format::kAscii) ++available;  // the last line may lack its newline
+  uint64_t needed = 0;
+  for (const Element& e : h.elements) {
+    uint64_t each = e.minBytes(h.format);
+    if (each == 0) continue;
+    uint64_t left = available - needed;
+    if (e.count > left / each)
+      throwInput(
+          "{}: line {}: element {} declares {} elements of at least {} bytes each, but only "
+          "{} bytes of data follow the header (truncated file or wrong count)",
+          name, e.line, e.name, e.count, each, size - pos);
+    needed += e.count * each;
+  }
+}
+
+}  // namespace mirage::ply

@@ -1,0 +1,57 @@
+// The header of a PLY file (http://paulbourke.net/dataformats/ply/): format, elements and their
+// properties. Parsed on its own so that every count can be checked against the limits and the
+// bytes actually present before the reader allocates anything.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace mirage::ply {
+
+enum class Type : uint8_t { kInt8, kUint8, kInt16, kUint16, kInt32, kUint32, kFloat32, kFloat64 };
+
+size_t typeSize(Type t);
+bool isInteger(Type t);
+
+enum class Format { kAscii, kBinaryLittleEndian, kBinaryBigEndian };
+
+struct Property {
+  std::string name;
+  Type type = Type::kFloat32;  // the scalar's type, or a list's item type
+  bool is_list = false;
+  Type count_type = Type::kUint8;  // a list's length type
+};
+
+struct Element {
+  std::string name;
+  uint64_t count = 0;
+  std::vector<Property> properties;
+  int line = 0;  // header line, for messages
+
+  // Index of the property called `name`, or -1.
+  int find(std::string_view name) const;
+  // The fewest bytes one element can take: binary sizes with empty lists, or for ASCII one
+  // character and one separator per value.
+  uint64_t minBytes(Format format) const;
+};
+
+struct Header {
+  Format format = Format::kAscii;
+  std::vector<Element> elements;
+  size_t data_offset = 0;  // first byte after the end_header line
+  int data_line = 0;       // line number of the first data line (ASCII messages)
+
+  const Element* find(std::string_view name) const;
+};
+
+// Parses the header of `bytes`; throws InputError naming `name`, the header line and what was
+// expected.
+Header parseHeader(const std::string& name, std::string_view bytes);
+
+// Throws InputError unless the `size` bytes of the file can hold the element counts the header
+// declares (each element at least Element::minBytes).
+void checkDataSize(const std::string& name, const Header& header, size_t size);
+
+}  // namespace mirage::ply

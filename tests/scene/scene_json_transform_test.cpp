@@ -1,0 +1,118 @@
+// JSON scene files, what the fields mean: keyframed animation, Euler angles, `fit`, and model
+// instances give the documented transforms and bounds.
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "scene/scene_json.h"
+
+namespace mirage::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path tempDir() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  fs::path dir = fs::temp_directory_path() / (std::string("mirage-scene-json-tf-") + info->name());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+// An ASCII PLY of an axis-aligned box from `lo` to `hi` (8 vertices, 12 triangles).
+void writeBoxPly(const fs::path& path, vec3 lo, vec3 hi) {
+  std::string s =
+      "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 12\nproperty list uchar int vertex_indices\nend_header\n";
+  for (int i = 0; i < 8; ++i)
+    s += fmt::format("{} {} {}\n", i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
+  for (const char* f : {"0 2 1", "1 2 3", "4 5 6", "5 7 6", "0 1 4", "1 5 4", "2 6 3", "3 6 7",
+                        "0 4 2", "2 4 6", "1 3 5", "3 7 5"})
+    s += fmt::format("3 {}\n", f);
+  std::ofstream(path) << s;
+}
+
+Scene parseIn(const fs::path& dir, const std::string& text) {
+  writeBoxPly(dir / "box.ply", {1, 2, 3}, {5, 4, 4});  // extent 4 x 2 x 1
+  std::ofstream(dir / "s.json") << text;
+  return loadSceneJson((dir / "s.json").string());
+}
+
+TEST(SceneJson, AnimationKeysGiveTheExpectedTransforms) {
+  Scene s = parseIn(tempDir(), R"({
+    "materials": [{"name": "m", "type": "diffuse"}],
+    "meshes": [{"name": "b", "procedural": "box"}],
+    "instances": [
+      {"name": "looped", "mesh": "b", "material": "m", "scale": 2, "animation": {"loop": true,
+       "keys": [{"time": 0}, {"time": 2, "translate": [2, 0, 4], "rotate": [0, 90, 0]}]}},
+      {"name": "once", "mesh": "b", "material": "m", "translate": [0, 1, 0], "animation": {
+       "keys": [{"time": 1, "translate": [0, 0, 0]}, {"time": 3, "translate": [4, 0, 0]}]}}]})");
+  EXPECT_FLOAT_EQ(s.duration(), 3.0f);
+  const Instance& looped = s.instances[0];
+  auto at = [&](const Instance& inst, float t, vec3 p) {
+    return transformPoint(inst.matrixAt(t), p);
+  };
+  // Halfway: translation halfway, 45 degrees about +Y, and the instance's scale 2 kept by both
+  // keys.
+  float c = 2.0f * std::cos(radians(45.0f));
+  EXPECT_NEAR(glm::distance(at(looped, 1.0f, {1, 0, 0}), vec3(1 + c, 0, 2 - c)), 0.0f, 1e-5f);
+  EXPECT_NEAR(glm::distance(at(looped, 0.0f, {1, 0, 0}), vec3(2, 0, 0)), 0.0f, 1e-5f);
+  EXPECT_NEAR(glm::distance(at(looped, 3.0f, {1, 0, 0}), at(looped, 1.0f, {1, 0, 0})), 0.0f, 1e-5f);
+  const Instance& once = s.instances[1];
+  EXPECT_NEAR(glm::distance(at(once, 0.0f, {0, 0, 0}), vec3(0, 0, 0)), 0.0f, 1e-6f);  // first holds
+  EXPECT_NEAR(glm::distance(at(once, 2.0f, {0, 0, 0}), vec3(2, 0, 0)), 0.0f, 1e-6f);
+  EXPECT_NEAR(glm::distance(at(once, 9.0f, {0, 0, 0}), vec3(4, 0, 0)), 0.0f, 1e-6f);  // last holds
+}
+
+TEST(SceneJson, EulerAnglesApplyXThenYThenZ) {
+  Scene s = parseIn(tempDir(), R"({
+    "materials": [{"name": "m", "type": "diffuse"}],
+    "meshes": [{"name": "b", "procedural": "box"}],
+    "instances": [{"mesh": "b", "material": "m", "rotate": [90, 90, 0]},
+                  {"mesh": "b", "material": "m", "rotate": [0, 90, 90]}]})");
+  // +Y: about X to +Z, then about Y to +X. (Y first would leave +Y at +Z.)
+  vec3 v = s.instances[0].transform.rotation * vec3(0, 1, 0);
+  EXPECT_NEAR(glm::distance(v, vec3(1, 0, 0)), 0.0f, 1e-6f);
+  // +X: about Y to -Z, about Z unchanged.
+  v = s.instances[1].transform.rotation * vec3(1, 0, 0);
+  EXPECT_NEAR(glm::distance(v, vec3(0, 0, -1)), 0.0f, 1e-6f);
+}
+
+TEST(SceneJson, FitScalesUniformlyCentresAndGrounds) {
+  Scene s = parseIn(tempDir(), R"({
+    "materials": [{"name": "m", "type": "diffuse"}],
+    "meshes": [{"name": "grounded", "file": "box.ply", "fit": {"size": 2, "ground": true}},
+               {"name": "centred", "file": "box.ply", "fit": {}},
+               {"name": "raw", "file": "box.ply"}],
+    "instances": [{"mesh": "grounded", "material": "m"}, {"mesh": "centred", "material": "m"},
+                  {"mesh": "raw", "material": "m"}]})");
+  auto near = [](vec3 a, vec3 b) { return glm::distance(a, b) < 1e-5f; };
+  Bounds3 g = s.instanceBounds(0), c = s.instanceBounds(1), r = s.instanceBounds(2);
+  EXPECT_TRUE(near(g.lo, {-1, 0, -0.25f}) && near(g.hi, {1, 1, 0.25f})) << g.lo.y << " " << g.hi.y;
+  EXPECT_TRUE(near(c.lo, {-0.5f, -0.25f, -0.125f}) && near(c.hi, {0.5f, 0.25f, 0.125f}));
+  EXPECT_TRUE(near(r.lo, {1, 2, 3}) && near(r.hi, {5, 4, 4}));
+}
+
+TEST(SceneJson, ModelInstancesBringTheFilesMeshes) {
+  Scene s = parseIn(tempDir(), R"({
+    "materials": [{"name": "shiny", "type": "reflector"}],
+    "meshes": [{"name": "block", "file": "box.ply", "fit": {"size": 1, "ground": true}}],
+    "instances": [{"name": "plain", "model": "block", "translate": [0, 0, 3]},
+                  {"name": "mirrored", "model": "block", "material_override": "shiny"}]})");
+  ASSERT_EQ(s.instances.size(), 2u);  // a PLY holds one mesh
+  const Instance& plain = s.instances[0];
+  EXPECT_EQ(plain.name, "plain");
+  EXPECT_EQ(s.materials[size_t(plain.material)].name, "model-default");
+  EXPECT_FALSE(s.isReflector(0));
+  EXPECT_TRUE(s.isReflector(1));
+  EXPECT_EQ(s.instances[1].mesh, plain.mesh);  // loaded once
+  Bounds3 b = s.instanceBounds(0);
+  EXPECT_NEAR(b.extent().x, 1.0f, 1e-5f);
+  EXPECT_NEAR(b.lo.y, 0.0f, 1e-5f);
+  EXPECT_NEAR(b.center().z, 3.0f, 1e-5f);
+}
+
+}  // namespace
+}  // namespace mirage::test

