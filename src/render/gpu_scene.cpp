@@ -52,7 +52,11 @@ GpuScene::GpuScene(const Scene& scene, const EnvironmentMap& environment)
     int levels = gpu::Texture::fullMipLevels(std::max(t.image.width(), t.image.height()));
     gpu::Texture tex =
         gpu::Texture::create2D(GL_RGBA16F, t.image.width(), t.image.height(), levels);
-    tex.upload(0, GL_RGBA, GL_FLOAT, t.image.data());
+    // Texture coordinates put (0, 0) at the image's bottom-left (GL's convention, and the ray
+    // tracer's); images are stored top row first, and GL takes the first row as t = 0.
+    Image rows = t.image;
+    rows.flipVertically();
+    tex.upload(0, GL_RGBA, GL_FLOAT, rows.data());
     tex.generateMipmaps();
     tex.setWrap(GL_REPEAT);
     textures_.push_back(std::move(tex));
