@@ -7,8 +7,6 @@ namespace mirage {
 
 namespace {
 
-const vec3 kCheckerLight{0.85f, 0.85f, 0.82f};
-const vec3 kCheckerDark{0.10f, 0.10f, 0.12f};
 
 quat rotationX(float degrees) {
   return glm::angleAxis(radians(degrees), vec3(1, 0, 0));
@@ -22,12 +20,6 @@ void addCheckerFloor(Scene& s, float size) {
   int mesh = addMesh(s, procedural::quad(size, size, 1.0f));
   int mat = addMaterial(s, Material::checker("checker", kCheckerLight, kCheckerDark, 1.0f));
   addInstance(s, "floor", mesh, mat, {});
-}
-
-void addBox(Scene& s, const char* name, vec3 center, vec3 half, vec3 color, float yaw = 0.0f) {
-  int mesh = addMesh(s, procedural::box(half));
-  int mat = addMaterial(s, Material::diffuse(name, color));
-  addInstance(s, name, mesh, mat, placeAt(center, vec3(1.0f), rotationY(yaw)));
 }
 
 Scene sphereOverChecker() {
@@ -168,6 +160,12 @@ int addInstance(Scene& scene, std::string name, int mesh, int material,
   inst.transform = transform;
   scene.instances.push_back(std::move(inst));
   return int(scene.instances.size()) - 1;
+}
+
+void addBox(Scene& s, const char* name, vec3 center, vec3 half, vec3 color, float yaw) {
+  int mesh = addMesh(s, procedural::box(half));
+  int mat = addMaterial(s, Material::diffuse(name, color));
+  addInstance(s, name, mesh, mat, placeAt(center, vec3(1.0f), rotationY(yaw)));
 }
 
 Transform placeAt(vec3 translation, vec3 scale, quat rotation) {

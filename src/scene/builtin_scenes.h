@@ -22,10 +22,16 @@ const std::vector<BuiltinSceneInfo>& builtinScenes();
 bool isBuiltinScene(const std::string& name);
 Scene makeBuiltinScene(const std::string& name, const SceneOptions& options = {});
 
+// The checkerboard colours of the built-in scenes and the default stage.
+inline const vec3 kCheckerLight{0.85f, 0.85f, 0.82f};
+inline const vec3 kCheckerDark{0.10f, 0.10f, 0.12f};
+
 // Helpers for building scenes in code.
 int addMesh(Scene& scene, Mesh mesh);
 int addMaterial(Scene& scene, Material material);
 int addInstance(Scene& scene, std::string name, int mesh, int material, const Transform& transform);
+// A diffuse box of half extents `half` centred at `center`, turned by `yaw` degrees about +Y.
+void addBox(Scene& scene, const char* name, vec3 center, vec3 half, vec3 color, float yaw = 0.0f);
 Transform placeAt(vec3 translation, vec3 scale = vec3(1.0f), quat rotation = quat(1, 0, 0, 0));
 
 }  // namespace mirage

@@ -13,17 +13,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The built-in scenes' checkerboard (builtin_scenes.cpp), so a stage looks like them.
-const vec3 kCheckerLight{0.85f, 0.85f, 0.82f};
-const vec3 kCheckerDark{0.10f, 0.10f, 0.12f};
-
-void addBox(Scene& s, const char* name, vec3 center, vec3 half, vec3 color, float yaw) {
-  int mesh = addMesh(s, procedural::box(half));
-  int mat = addMaterial(s, Material::diffuse(name, color));
-  addInstance(s, name, mesh, mat,
-              placeAt(center, vec3(1.0f), glm::angleAxis(radians(yaw), vec3(0, 1, 0))));
-}
-
 // "bunny" for bunny.ply and bunny.ply.gz alike.
 std::string stemOf(const std::string& path) {
   fs::path p(path);
