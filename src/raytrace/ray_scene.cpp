@@ -1,5 +1,7 @@
 #include "raytrace/ray_scene.h"
 
+#include <algorithm>
+#include <cstdlib>
 #include <cstring>
 
 #include <spdlog/spdlog.h>
@@ -17,8 +19,12 @@ void errorCallback(void*, RTCError code, const char* message) {
 }  // namespace
 
 RayScene::RayScene(const Scene& scene) : scene_(scene) {
-  device_ = rtcNewDevice(nullptr);
-  if (!device_) throwRuntime("Embree: cannot create a device (error {})", int(rtcGetDeviceError(nullptr)));
+  // MIRAGE_EMBREE_CONFIG (e.g. "isa=avx2", "threads=1") lets tests and benchmarks pin Embree's
+  // kernels: packet and single-ray results are compared per ISA.
+  const char* config = std::getenv("MIRAGE_EMBREE_CONFIG");
+  device_ = rtcNewDevice(config);
+  if (!device_)
+    throwRuntime("Embree: cannot create a device (error {})", int(rtcGetDeviceError(nullptr)));
   rtcSetDeviceErrorFunction(device_, errorCallback, nullptr);
 }
 
@@ -33,22 +39,28 @@ double RayScene::build(float time) {
   rtc_scene_ = rtcNewScene(device_);
   rtcSetSceneBuildQuality(rtc_scene_, RTC_BUILD_QUALITY_HIGH);
   matrices_.resize(scene_.instances.size());
+  normal_matrices_.resize(scene_.instances.size());
+  linear_parts_.resize(scene_.instances.size());
   world_.resize(scene_.instances.size());
   for (size_t i = 0; i < scene_.instances.size(); ++i) {
     const Instance& inst = scene_.instances[i];
     const Mesh& mesh = scene_.meshes[size_t(inst.mesh)];
     matrices_[i] = inst.matrixAt(time);
+    normal_matrices_[i] = normalMatrix(matrices_[i]);
+    linear_parts_[i] = mat3(matrices_[i]);
     auto& world = world_[i];
     world.resize(mesh.positions.size());
-    for (size_t v = 0; v < world.size(); ++v) world[v] = transformPoint(matrices_[i], mesh.positions[v]);
+    for (size_t v = 0; v < world.size(); ++v)
+      world[v] = transformPoint(matrices_[i], mesh.positions[v]);
 
     RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
     // Embree may read 16 bytes at the last vertex: share a padded copy.
     auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
         geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, sizeof(vec3), world.size()));
     std::memcpy(vertices, world.data(), world.size() * sizeof(vec3));
-    auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-        geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, sizeof(uvec3), mesh.triangles.size()));
+    auto* indices = static_cast<unsigned*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, sizeof(uvec3),
+                                mesh.triangles.size()));
     std::memcpy(indices, mesh.triangles.data(), mesh.triangles.size() * sizeof(uvec3));
     rtcCommitGeometry(geometry);
     rtcAttachGeometryByID(rtc_scene_, geometry, unsigned(i));
@@ -85,6 +97,52 @@ RayHit RayScene::intersect(const Ray& ray) const {
   hit.u = rh.hit.u;
   hit.v = rh.hit.v;
   return hit;
+}
+
+// rtcIntersect16 with the *incoherent* context flag: Embree 3.13's hybrid packet intersector
+// then runs its single-ray traversal and triangle test on each ray of the packet (the code
+// rtcIntersect1 runs), so every hit is rtcIntersect1's, bit for bit, while the packet saves the
+// per-call overhead and sets the rays up 16 wide. The coherent flag would switch to frustum
+// traversal with packet triangle tests, which give other hits on edges and ties
+// (docs/benchmarks.md measures both; tests/raytrace checks render() against single rays).
+void RayScene::intersect(const Ray* rays, RayHit* hits, size_t n) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+  for (size_t begin = 0; begin < n; begin += 16) {
+    const int count = int(std::min<size_t>(16, n - begin));
+    alignas(64) RTCRayHit16 packet;
+    alignas(64) int valid[16];
+    for (int k = 0; k < 16; ++k) {
+      const Ray& ray = rays[begin + size_t(std::min(k, count - 1))];
+      valid[k] = k < count ? -1 : 0;
+      packet.ray.org_x[k] = ray.origin.x;
+      packet.ray.org_y[k] = ray.origin.y;
+      packet.ray.org_z[k] = ray.origin.z;
+      packet.ray.dir_x[k] = ray.direction.x;
+      packet.ray.dir_y[k] = ray.direction.y;
+      packet.ray.dir_z[k] = ray.direction.z;
+      packet.ray.tnear[k] = ray.tmin;
+      packet.ray.tfar[k] = ray.tmax;
+      packet.ray.time[k] = 0.0f;
+      packet.ray.mask[k] = 0xffffffffu;
+      packet.ray.id[k] = 0;
+      packet.ray.flags[k] = 0;
+      packet.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+      packet.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+    }
+    rtcIntersect16(valid, rtc_scene_, &context, &packet);
+    for (int k = 0; k < count; ++k) {
+      RayHit& hit = hits[begin + size_t(k)];
+      hit = RayHit{};
+      if (packet.hit.geomID[k] == RTC_INVALID_GEOMETRY_ID) continue;
+      hit.t = packet.ray.tfar[k];
+      hit.instance = int(packet.hit.geomID[k]);
+      hit.primitive = packet.hit.primID[k];
+      hit.u = packet.hit.u[k];
+      hit.v = packet.hit.v[k];
+    }
+  }
 }
 
 }  // namespace mirage

@@ -1,7 +1,5 @@
 #include "raytrace/tracer.h"
 
-#include <chrono>
-
 #include <tbb/blocked_range2d.h>
 #include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
@@ -28,6 +26,8 @@ RayTracer::RayTracer(const Scene& scene, const EnvironmentMap& environment)
   reflector_id_.assign(scene.instances.size(), 0);
   std::vector<int> reflectors = scene.reflectorInstances();
   for (size_t r = 0; r < reflectors.size(); ++r) reflector_id_[size_t(reflectors[r])] = int(r) + 1;
+  material_data_.reserve(scene.materials.size());
+  for (const Material& material : scene.materials) material_data_.push_back(material.gpuData());
   epsilon_ = 1e-5f * std::max(scene.bounds().radius(), 1e-3f);
 }
 
@@ -36,31 +36,42 @@ double RayTracer::prepare(float time) {
   return ray_scene_.build(time);
 }
 
-RayTracer::SurfacePoint RayTracer::surface(const RayHit& hit) const {
+template <bool kReference>
+RayTracer::SurfacePoint RayTracer::surface(const RayHit& hit, bool reflector) const {
   const Instance& inst = scene_.instances[size_t(hit.instance)];
   const Mesh& mesh = scene_.meshes[size_t(inst.mesh)];
   const uvec3 tri = mesh.triangles[hit.primitive];
   const auto& world = ray_scene_.worldPositions(hit.instance);
   const mat4& model = ray_scene_.instanceMatrix(hit.instance);
   float w0 = 1.0f - hit.u - hit.v, w1 = hit.u, w2 = hit.v;
+  auto geometric = [&] {
+    vec3 ng = glm::cross(world[tri.y] - world[tri.x], world[tri.z] - world[tri.x]);
+    float len = glm::length(ng);
+    return len > 0.0f ? ng / len : vec3(0, 1, 0);
+  };
   SurfacePoint s;
   s.material = inst.material;
-  s.position = w0 * world[tri.x] + w1 * world[tri.y] + w2 * world[tri.z];
-  vec3 ng = glm::cross(world[tri.y] - world[tri.x], world[tri.z] - world[tri.x]);
-  float len = glm::length(ng);
-  s.geometric = len > 0.0f ? ng / len : vec3(0, 1, 0);
+  // Diffuse shading reads neither the position nor the geometric normal: render() skips them
+  // there (the values it does compute are the reference's, operation for operation).
+  const bool full = kReference || reflector || mesh.normals.empty();
+  if (full) {
+    s.position = w0 * world[tri.x] + w1 * world[tri.y] + w2 * world[tri.z];
+    s.geometric = geometric();
+  }
   if (!mesh.normals.empty()) {
     vec3 n = w0 * mesh.normals[tri.x] + w1 * mesh.normals[tri.y] + w2 * mesh.normals[tri.z];
-    n = normalMatrix(model) * n;
+    // The inverse transpose once per build instead of once per hit: the same matrix.
+    n = (kReference ? normalMatrix(model) : ray_scene_.normalMatrixOf(hit.instance)) * n;
     float nl = glm::length(n);
-    s.normal = nl > 0.0f ? n / nl : s.geometric;
+    s.normal = nl > 0.0f ? n / nl : (full ? s.geometric : geometric());
   } else {
     s.normal = s.geometric;
   }
   if (!mesh.uvs.empty()) s.uv = w0 * mesh.uvs[tri.x] + w1 * mesh.uvs[tri.y] + w2 * mesh.uvs[tri.z];
   if (!mesh.tangents.empty()) {
     vec4 t = w0 * mesh.tangents[tri.x] + w1 * mesh.tangents[tri.y] + w2 * mesh.tangents[tri.z];
-    s.tangent = vec4(mat3(model) * vec3(t), mesh.tangents[tri.x].w);
+    const mat3 linear = kReference ? mat3(model) : ray_scene_.linearPartOf(hit.instance);
+    s.tangent = vec4(linear * vec3(t), mesh.tangents[tri.x].w);
   }
   return s;
 }
@@ -80,17 +91,23 @@ vec3 RayTracer::sampleTexture(int texture, vec2 uv) const {
                   glm::mix(at(x0, y0 + 1), at(x0 + 1, y0 + 1), fx), fy);
 }
 
+template <bool kReference>
 vec3 RayTracer::shadeHit(const Ray& ray, const RayHit& hit, int bounces_left,
                          uint64_t& reflected_rays) const {
-  SurfacePoint s = surface(hit);
-  const Material& material = scene_.materials[size_t(s.material)];
-  sh::MaterialData m = material.gpuData();
+  const int material_index = scene_.instances[size_t(hit.instance)].material;
+  const Material& material = scene_.materials[size_t(material_index)];
+  SurfacePoint s = surface<kReference>(hit, material.isReflector());
+  // The reference converts the material at every hit; render() reads the converted copy.
+  const sh::MaterialData m =
+      kReference ? material.gpuData() : material_data_[size_t(material_index)];
   vec3 n = s.normal;
-  if (material.normal_map >= 0) n = sh::perturb_normal(n, s.tangent, sampleTexture(material.normal_map, s.uv));
+  if (material.normal_map >= 0)
+    n = sh::perturb_normal(n, s.tangent, sampleTexture(material.normal_map, s.uv));
   if (!material.isReflector()) {
     vec3 albedo = sh::material_albedo(m, s.uv);
     if (material.albedo_texture >= 0) albedo *= sampleTexture(material.albedo_texture, s.uv);
-    return sh::shade_diffuse(albedo, n, scene_.light.direction, scene_.light.color, scene_.light.ambient);
+    return sh::shade_diffuse(albedo, n, scene_.light.direction, scene_.light.color,
+                             scene_.light.ambient);
   }
   if (bounces_left <= 0) return sh::reflector_base(m);
   vec3 to_viewer = -glm::normalize(ray.direction);
@@ -100,26 +117,69 @@ vec3 RayTracer::shadeHit(const Ray& ray, const RayHit& hit, int bounces_left,
   vec3 side = glm::dot(s.geometric, r) >= 0.0f ? s.geometric : -s.geometric;
   Ray reflected{s.position + side * epsilon_, r, 0.0f, kInfinity};
   ++reflected_rays;
-  TracedRadiance incoming = trace(reflected, bounces_left - 1, reflected_rays);
+  TracedRadiance incoming = traceRay<kReference>(reflected, bounces_left - 1, reflected_rays);
   float cos_theta = std::max(glm::dot(facing, to_viewer), 0.0f);
   return sh::shade_reflector(m, cos_theta, incoming.distance, incoming.radiance);
 }
 
-TracedRadiance RayTracer::trace(const Ray& ray, int bounces_left, uint64_t& reflected_rays) const {
+template <bool kReference>
+TracedRadiance RayTracer::traceRay(const Ray& ray, int bounces_left,
+                                   uint64_t& reflected_rays) const {
+  // Reflected rays are incoherent: Embree's single-ray kernel is the fastest for them, and
+  // the only one whose hits the reference reproduces (see docs/benchmarks.md).
   RayHit hit = ray_scene_.intersect(ray);
   if (!hit.hit()) return {environment_.sample(ray.direction), sh::MISS_DISTANCE};
   float distance = hit.t * glm::length(ray.direction);
-  return {shadeHit(ray, hit, bounces_left, reflected_rays), distance};
+  return {shadeHit<kReference>(ray, hit, bounces_left, reflected_rays), distance};
+}
+
+TracedRadiance RayTracer::trace(const Ray& ray, int bounces_left, uint64_t& reflected_rays) const {
+  return traceRay<false>(ray, bounces_left, reflected_rays);
 }
 
 TraceResult RayTracer::render(const View& view, const TraceSettings& settings) const {
-  const ivec2 size = view.size();
   TraceResult result;
-  result.color = Image(size.x, size.y);
-  result.ids = IdImage(size.x, size.y);
+  renderTiles<false>(view, settings, result);
+  return result;
+}
+
+void RayTracer::render(const View& view, const TraceSettings& settings, TraceResult& out) const {
+  renderTiles<false>(view, settings, out);
+}
+
+TraceResult RayTracer::renderReference(const View& view, const TraceSettings& settings) const {
+  TraceResult result;
+  renderTiles<true>(view, settings, result);
+  return result;
+}
+
+// Primary rays go to Embree 16 at a time with the incoherent flag (RayScene::intersect(rays,
+// hits, n)), which returns rtcIntersect1's hits and is 1.5-1.7x faster on them. Coherent
+// packets (frustum traversal, packet triangle tests) would be faster still but return other hits
+// on edges and ties: the ground truth must not depend on how rays are batched. Reflected rays
+// stay single: packets gain little on them. docs/benchmarks.md has the measurements.
+template <bool kReference>
+void RayTracer::renderTiles(const View& view, const TraceSettings& settings,
+                            TraceResult& result) const {
+  const ivec2 size = view.size();
+  // Pass 1 writes every pixel's colour and id: images of the right size are reused as they are.
+  if (result.color.size() != size) result.color = Image(size.x, size.y);
+  if (result.ids.size() != size) result.ids = IdImage(size.x, size.y);
+  result.stats = {};
   // Stratified sub-pixel positions: an n x n grid holding spp samples.
   const int spp = std::max(settings.spp, 1);
   const int grid = int(std::ceil(std::sqrt(double(spp))));
+  auto offset = [&](int s) {
+    float sx = spp == 1 ? 0.5f : (float(s % grid) + 0.5f) / float(grid);
+    float sy = spp == 1 ? 0.5f : (float(s / grid) + 0.5f) / float(grid);
+    return vec2(sx, sy);
+  };
+  // The sample whose ray is the pixel-centre ray, or -1: then the centre is traced on its own.
+  // The reference traces it separately whenever spp > 1; an odd grid has it among the samples.
+  int centre_sample = spp == 1 ? 0 : -1;
+  if (!kReference)
+    for (int s = 0; s < spp && centre_sample < 0; ++s)
+      if (offset(s) == vec2(0.5f)) centre_sample = s;
   constexpr int kTile = 16;
   const int tiles_x = (size.x + kTile - 1) / kTile, tiles_y = (size.y + kTile - 1) / kTile;
   Progress progress("raytrace", size_t(tiles_x) * size_t(tiles_y));
@@ -134,12 +194,31 @@ TraceResult RayTracer::render(const View& view, const TraceSettings& settings) c
   };
   tbb::parallel_for(tbb::blocked_range2d<int>(0, tiles_y, 0, tiles_x), [&](const auto& range) {
     std::vector<Pending> pending;
+    pending.reserve(size_t(kTile) * size_t(kTile) * size_t(spp));
+    std::vector<Ray> rays;
+    std::vector<RayHit> hits;
     for (int ty = range.rows().begin(); ty != range.rows().end(); ++ty)
       for (int tx = range.cols().begin(); tx != range.cols().end(); ++tx) {
         Stopwatch phase;
         pending.clear();
         uint64_t primary = 0, reflected = 0;
         int x1 = std::min((tx + 1) * kTile, size.x), y1 = std::min((ty + 1) * kTile, size.y);
+        if (!kReference) {
+          // The tile's primary rays, in the order the loop below takes them, traced at once.
+          rays.clear();
+          for (int y = ty * kTile; y < y1; ++y)
+            for (int x = tx * kTile; x < x1; ++x) {
+              for (int s = 0; s < spp; ++s) {
+                vec2 o = offset(s);
+                rays.push_back(view.primaryRay(float(x) + o.x, float(y) + o.y));
+              }
+              if (centre_sample < 0)
+                rays.push_back(view.primaryRay(float(x) + 0.5f, float(y) + 0.5f));
+            }
+          hits.resize(rays.size());
+          ray_scene_.intersect(rays.data(), hits.data(), rays.size());
+        }
+        size_t next = 0;  // the next of `rays`/`hits`
         // Pass 1: primary rays; diffuse surfaces and the sky are shaded at once.
         for (int y = ty * kTile; y < y1; ++y)
           for (int x = tx * kTile; x < x1; ++x) {
@@ -147,19 +226,33 @@ TraceResult RayTracer::render(const View& view, const TraceSettings& settings) c
             vec3 sum(0.0f);
             RayHit centre_hit;
             for (int s = 0; s < spp; ++s) {
-              float sx = spp == 1 ? 0.5f : (float(s % grid) + 0.5f) / float(grid);
-              float sy = spp == 1 ? 0.5f : (float(s / grid) + 0.5f) / float(grid);
-              Ray ray = view.primaryRay(float(x) + sx, float(y) + sy);
-              RayHit hit = ray_scene_.intersect(ray);
+              Ray ray;
+              RayHit hit;
+              if (kReference) {
+                vec2 o = offset(s);
+                ray = view.primaryRay(float(x) + o.x, float(y) + o.y);
+                hit = ray_scene_.intersect(ray);
+              } else {
+                ray = rays[next];
+                hit = hits[next++];
+              }
               ++primary;
-              if (spp == 1) centre_hit = hit;
-              if (!hit.hit()) sum += environment_.sample(ray.direction);
-              else if (reflector_id_[size_t(hit.instance)] == 0) sum += shadeHit(ray, hit, 0, reflected);
-              else pending.push_back({ray, hit, pixel});
+              if (s == centre_sample) centre_hit = hit;
+              if (!hit.hit())
+                sum += environment_.sample(ray.direction);
+              else if (reflector_id_[size_t(hit.instance)] == 0)
+                sum += shadeHit<kReference>(ray, hit, 0, reflected);
+              else
+                pending.push_back({ray, hit, pixel});
             }
             // The ID and distance come from the pixel centre, as the rasteriser's do.
-            if (spp > 1) centre_hit = ray_scene_.intersect(view.primaryRay(float(x) + 0.5f, float(y) + 0.5f));
-            result.ids(x, y) = centre_hit.hit() ? uint32_t(reflector_id_[size_t(centre_hit.instance)]) : 0u;
+            if (centre_sample < 0)
+              centre_hit =
+                  kReference
+                      ? ray_scene_.intersect(view.primaryRay(float(x) + 0.5f, float(y) + 0.5f))
+                      : hits[next++];
+            result.ids(x, y) =
+                centre_hit.hit() ? uint32_t(reflector_id_[size_t(centre_hit.instance)]) : 0u;
             float distance = centre_hit.hit() ? centre_hit.t : sh::MISS_DISTANCE;
             result.color(x, y) = vec4(sum / float(spp), distance);
           }
@@ -167,7 +260,7 @@ TraceResult RayTracer::render(const View& view, const TraceSettings& settings) c
         phase.restart();
         // Pass 2: the reflections of the reflector samples.
         for (const Pending& p : pending) {
-          vec3 c = shadeHit(p.ray, p.hit, settings.order, reflected);
+          vec3 c = shadeHit<kReference>(p.ray, p.hit, settings.order, reflected);
           vec4& out = result.color.data()[p.pixel];
           out = vec4(vec3(out) + c / float(spp), out.w);
         }
@@ -184,7 +277,6 @@ TraceResult RayTracer::render(const View& view, const TraceSettings& settings) c
   result.stats.reflect_ms = result.stats.ms * (1.0 - share);
   result.stats.primary_rays = primary_total;
   result.stats.reflected_rays = reflected_total;
-  return result;
 }
 
 }  // namespace mirage

@@ -11,6 +11,7 @@
 #include "raytrace/ray_scene.h"
 #include "scene/environment.h"
 #include "scene/scene.h"
+#include "shading/gpu_types.h"
 
 namespace mirage {
 
@@ -45,6 +46,13 @@ class RayTracer {
   // Builds the BVH for `time` unless it is already built for it; returns the build ms (or 0).
   double prepare(float time);
   TraceResult render(const View& view, const TraceSettings& settings) const;
+  // The same frame into `out`, reusing its images when their size matches: callers that render
+  // frame after frame save the page faults of fresh 7-15 MB images (every pixel is rewritten).
+  void render(const View& view, const TraceSettings& settings, TraceResult& out) const;
+  // The straightforward implementation render() replaced: every per-hit quantity (normal
+  // matrix, material data) recomputed at each hit, a separate centre ray per pixel when
+  // spp > 1. Kept as the reference that render() must match bit for bit (tests/raytrace).
+  TraceResult renderReference(const View& view, const TraceSettings& settings) const;
   // The radiance along one ray with `bounces_left` reflections still allowed.
   TracedRadiance trace(const Ray& ray, int bounces_left, uint64_t& reflected_rays) const;
 
@@ -52,14 +60,23 @@ class RayTracer {
 
  private:
   struct SurfacePoint;
-  SurfacePoint surface(const RayHit& hit) const;
-  vec3 shadeHit(const Ray& ray, const RayHit& hit, int bounces_left, uint64_t& reflected_rays) const;
+  // kReference selects the original per-hit computations; both give the same floats.
+  template <bool kReference>
+  SurfacePoint surface(const RayHit& hit, bool reflector) const;
+  template <bool kReference>
+  vec3 shadeHit(const Ray& ray, const RayHit& hit, int bounces_left,
+                uint64_t& reflected_rays) const;
+  template <bool kReference>
+  TracedRadiance traceRay(const Ray& ray, int bounces_left, uint64_t& reflected_rays) const;
+  template <bool kReference>
+  void renderTiles(const View& view, const TraceSettings& settings, TraceResult& result) const;
   vec3 sampleTexture(int texture, vec2 uv) const;
 
   const Scene& scene_;
   const EnvironmentMap& environment_;
   RayScene ray_scene_;
   std::vector<int> reflector_id_;  // per instance: 1-based reflector id, 0 if diffuse
+  std::vector<shading::MaterialData> material_data_;  // per material: Material::gpuData()
   float epsilon_ = 1e-4f;
 };
 

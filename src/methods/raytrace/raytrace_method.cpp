@@ -25,7 +25,9 @@ class RaytraceMethod final : public Method {
 
   void render(FrameContext& frame) override {
     frame.beginPart(gpu::Part::kDirect);
-    TraceResult result = tracer_.render(frame.view, {frame.settings.order, spp_});
+    // Into the kept images: a fresh 7-15 MB image per frame costs page faults (docs/benchmarks.md).
+    TraceResult& result = result_;
+    tracer_.render(frame.view, {frame.settings.order, spp_}, result);
     // Primary and reflected rays run interleaved per tile; the tracer measured the split.
     if (frame.timer)
       frame.timer->shift(gpu::Part::kDirect, gpu::Part::kReflect, result.stats.reflect_ms);
@@ -49,6 +51,7 @@ class RaytraceMethod final : public Method {
   const MethodInfo& info_;
   int spp_;
   RayTracer tracer_;
+  TraceResult result_;
   TraceStats last_;
   double last_build_ms_ = 0.0, trace_ms_ = 0.0;
   long builds_ = 0;
