@@ -39,7 +39,7 @@ void traceAll(RTCScene scene, const std::vector<Ray>& rays, std::vector<RTCRayHi
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   for (size_t i = 0; i < rays.size(); ++i) {
-    hits[i] = toRtc(rays[i]);
+    hits[i] = toRtcRayHit(rays[i]);
     rtcIntersect1(scene, &context, &hits[i]);
   }
 }
@@ -96,22 +96,6 @@ int hardwareThreads() {
 std::vector<int> threadCounts() {
   int n = hardwareThreads();
   return n > 1 ? std::vector<int>{1, n} : std::vector<int>{1};
-}
-
-RTCRayHit toRtc(const Ray& ray) {
-  RTCRayHit rh{};
-  rh.ray.org_x = ray.origin.x;
-  rh.ray.org_y = ray.origin.y;
-  rh.ray.org_z = ray.origin.z;
-  rh.ray.dir_x = ray.direction.x;
-  rh.ray.dir_y = ray.direction.y;
-  rh.ray.dir_z = ray.direction.z;
-  rh.ray.tnear = ray.tmin;
-  rh.ray.tfar = ray.tmax;
-  rh.ray.mask = 0xffffffffu;
-  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  return rh;
 }
 
 bool sameHit(const RTCRayHit& a, const RTCRayHit& b) {

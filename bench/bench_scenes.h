@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "raytrace/embree_rays.h"
 #include "raytrace/tracer.h"
 #include "scene/environment.h"
 #include "scene/scene.h"
@@ -45,7 +46,6 @@ int hardwareThreads();
 // The thread counts benchmarks run with: 1 and all of them (once if the machine has one).
 std::vector<int> threadCounts();
 
-RTCRayHit toRtc(const Ray& ray);
 // Same hit, bit for bit (instance, triangle, t, u, v); two misses are the same.
 bool sameHit(const RTCRayHit& a, const RTCRayHit& b);
 
@@ -88,34 +88,5 @@ struct Packet<16> {
     rtcIntersect16(valid, s, c, p);
   }
 };
-
-template <typename P>
-void setLane(P& p, int k, const Ray& r) {
-  p.ray.org_x[k] = r.origin.x;
-  p.ray.org_y[k] = r.origin.y;
-  p.ray.org_z[k] = r.origin.z;
-  p.ray.dir_x[k] = r.direction.x;
-  p.ray.dir_y[k] = r.direction.y;
-  p.ray.dir_z[k] = r.direction.z;
-  p.ray.tnear[k] = r.tmin;
-  p.ray.tfar[k] = r.tmax;
-  p.ray.time[k] = 0.0f;
-  p.ray.mask[k] = 0xffffffffu;
-  p.ray.id[k] = 0;
-  p.ray.flags[k] = 0;
-  p.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
-  p.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
-}
-
-template <typename P>
-RTCRayHit laneHit(const P& p, int k) {
-  RTCRayHit h{};
-  h.ray.tfar = p.ray.tfar[k];
-  h.hit.geomID = p.hit.geomID[k];
-  h.hit.primID = p.hit.primID[k];
-  h.hit.u = p.hit.u[k];
-  h.hit.v = p.hit.v[k];
-  return h;
-}
 
 }  // namespace mirage::bench

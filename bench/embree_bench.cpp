@@ -35,7 +35,7 @@ void singleRays(benchmark::State& state, const std::vector<Ray>& rays, RTCScene 
     forChunks(int(rays.size()), 256, threads, [&](int begin, int end) {
       RTCIntersectContext context = makeContext(false);
       for (int i = begin; i < end; ++i) {
-        RTCRayHit rh = toRtc(rays[size_t(i)]);
+        RTCRayHit rh = toRtcRayHit(rays[size_t(i)]);
         rtcIntersect1(scene, &context, &rh);
         benchmark::DoNotOptimize(rh);
       }
@@ -73,7 +73,7 @@ void tracePacket(const std::vector<Ray>& rays, const int* index, RTCScene scene,
                  RTCIntersectContext* context, typename Packet<K>::Type& p, int* valid) {
   for (int k = 0; k < K; ++k) {
     valid[k] = index[k] >= 0 ? -1 : 0;
-    setLane(p, k, rays[size_t(std::max(index[k], 0))]);
+    setPacketLane(p, k, rays[size_t(std::max(index[k], 0))]);
   }
   Packet<K>::intersect(valid, scene, context, &p);
 }
@@ -90,7 +90,7 @@ int packetDifferences(const std::vector<Ray>& rays, const std::vector<RTCRayHit>
     tracePacket<K>(rays, &order[b], scene, &context, p, valid);
     for (int k = 0; k < K; ++k)
       if (order[b + size_t(k)] >= 0 &&
-          !sameHit(laneHit(p, k), single[size_t(order[b + size_t(k)])]))
+          !sameHit(packetLaneHit(p, k), single[size_t(order[b + size_t(k)])]))
         ++differ;
   }
   return differ;
@@ -127,7 +127,7 @@ void streamRays(benchmark::State& state, const std::vector<Ray>& rays,
     RTCIntersectContext context = makeContext(coherent);
     buffer.clear();
     for (int i = begin; i < end; ++i)
-      if (order[size_t(i)] >= 0) buffer.push_back(toRtc(rays[size_t(order[size_t(i)])]));
+      if (order[size_t(i)] >= 0) buffer.push_back(toRtcRayHit(rays[size_t(order[size_t(i)])]));
     rtcIntersect1M(scene, &context, buffer.data(), unsigned(buffer.size()), sizeof(RTCRayHit));
   };
   for (auto _ : state) {
@@ -166,6 +166,17 @@ void tileSamples(const View& view, int tile, std::vector<Ray>& rays) {
                                        float(y) + (float(s / kGrid) + 0.5f) / float(kGrid)));
 }
 
+// Sixteen consecutive rays as one full packet.
+void intersectFull16(RTCScene scene, RTCIntersectContext* context, const Ray* rays,
+                     RTCRayHit16& p) {
+  alignas(64) int valid[16];
+  for (int k = 0; k < 16; ++k) {
+    valid[k] = -1;
+    setPacketLane(p, k, rays[k]);
+  }
+  rtcIntersect16(valid, scene, context, &p);
+}
+
 void supersampled(benchmark::State& state, const BenchScene& b, int threads, bool packets) {
   const int tiles = (kSize.x / kTile) * (kSize.y / kTile);
   constexpr int kRays = kTile * kTile * kGrid * kGrid;  // a multiple of 16
@@ -177,7 +188,7 @@ void supersampled(benchmark::State& state, const BenchScene& b, int threads, boo
         tileSamples(b.view, tile, rays);
         if (!packets) {
           for (const Ray& r : rays) {
-            RTCRayHit rh = toRtc(r);
+            RTCRayHit rh = toRtcRayHit(r);
             rtcIntersect1(b.rtc(), &context, &rh);
             benchmark::DoNotOptimize(rh);
           }
@@ -185,12 +196,7 @@ void supersampled(benchmark::State& state, const BenchScene& b, int threads, boo
         }
         for (int i = 0; i < kRays; i += 16) {
           alignas(64) RTCRayHit16 p;
-          alignas(64) int valid[16];
-          for (int k = 0; k < 16; ++k) {
-            valid[k] = -1;
-            setLane(p, k, rays[size_t(i + k)]);
-          }
-          rtcIntersect16(valid, b.rtc(), &context, &p);
+          intersectFull16(b.rtc(), &context, &rays[size_t(i)], p);
           benchmark::DoNotOptimize(p);
         }
       }
@@ -206,16 +212,11 @@ void supersampled(benchmark::State& state, const BenchScene& b, int threads, boo
     tileSamples(b.view, tile, rays);
     for (int i = 0; i < kRays; i += 16) {
       alignas(64) RTCRayHit16 p;
-      alignas(64) int valid[16];
+      intersectFull16(b.rtc(), &coherent, &rays[size_t(i)], p);
       for (int k = 0; k < 16; ++k) {
-        valid[k] = -1;
-        setLane(p, k, rays[size_t(i + k)]);
-      }
-      rtcIntersect16(valid, b.rtc(), &coherent, &p);
-      for (int k = 0; k < 16; ++k) {
-        RTCRayHit rh = toRtc(rays[size_t(i + k)]);
+        RTCRayHit rh = toRtcRayHit(rays[size_t(i + k)]);
         rtcIntersect1(b.rtc(), &single, &rh);
-        if (!sameHit(laneHit(p, k), rh)) ++differ;
+        if (!sameHit(packetLaneHit(p, k), rh)) ++differ;
       }
     }
   }

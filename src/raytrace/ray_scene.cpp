@@ -1,5 +1,7 @@
 #include "raytrace/ray_scene.h"
 
+#include "raytrace/embree_rays.h"
+
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
@@ -16,6 +18,17 @@ namespace {
 void errorCallback(void*, RTCError code, const char* message) {
   spdlog::error("Embree error {}: {}", int(code), message ? message : "");
 }
+RayHit toRayHit(const RTCRayHit& rh) {
+  RayHit hit;
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
+  hit.t = rh.ray.tfar;
+  hit.instance = int(rh.hit.geomID);
+  hit.primitive = rh.hit.primID;
+  hit.u = rh.hit.u;
+  hit.v = rh.hit.v;
+  return hit;
+}
+
 }  // namespace
 
 RayScene::RayScene(const Scene& scene) : scene_(scene) {
@@ -76,27 +89,9 @@ double RayScene::build(float time) {
 RayHit RayScene::intersect(const Ray& ray) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  RTCRayHit rh{};
-  rh.ray.org_x = ray.origin.x;
-  rh.ray.org_y = ray.origin.y;
-  rh.ray.org_z = ray.origin.z;
-  rh.ray.dir_x = ray.direction.x;
-  rh.ray.dir_y = ray.direction.y;
-  rh.ray.dir_z = ray.direction.z;
-  rh.ray.tnear = ray.tmin;
-  rh.ray.tfar = ray.tmax;
-  rh.ray.mask = 0xffffffffu;
-  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  RTCRayHit rh = toRtcRayHit(ray);
   rtcIntersect1(rtc_scene_, &context, &rh);
-  RayHit hit;
-  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
-  hit.t = rh.ray.tfar;
-  hit.instance = int(rh.hit.geomID);
-  hit.primitive = rh.hit.primID;
-  hit.u = rh.hit.u;
-  hit.v = rh.hit.v;
-  return hit;
+  return toRayHit(rh);
 }
 
 // rtcIntersect16 with the *incoherent* context flag: Embree 3.13's hybrid packet intersector
@@ -116,32 +111,10 @@ void RayScene::intersect(const Ray* rays, RayHit* hits, size_t n) const {
     for (int k = 0; k < 16; ++k) {
       const Ray& ray = rays[begin + size_t(std::min(k, count - 1))];
       valid[k] = k < count ? -1 : 0;
-      packet.ray.org_x[k] = ray.origin.x;
-      packet.ray.org_y[k] = ray.origin.y;
-      packet.ray.org_z[k] = ray.origin.z;
-      packet.ray.dir_x[k] = ray.direction.x;
-      packet.ray.dir_y[k] = ray.direction.y;
-      packet.ray.dir_z[k] = ray.direction.z;
-      packet.ray.tnear[k] = ray.tmin;
-      packet.ray.tfar[k] = ray.tmax;
-      packet.ray.time[k] = 0.0f;
-      packet.ray.mask[k] = 0xffffffffu;
-      packet.ray.id[k] = 0;
-      packet.ray.flags[k] = 0;
-      packet.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
-      packet.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+      setPacketLane(packet, k, ray);
     }
     rtcIntersect16(valid, rtc_scene_, &context, &packet);
-    for (int k = 0; k < count; ++k) {
-      RayHit& hit = hits[begin + size_t(k)];
-      hit = RayHit{};
-      if (packet.hit.geomID[k] == RTC_INVALID_GEOMETRY_ID) continue;
-      hit.t = packet.ray.tfar[k];
-      hit.instance = int(packet.hit.geomID[k]);
-      hit.primitive = packet.hit.primID[k];
-      hit.u = packet.hit.u[k];
-      hit.v = packet.hit.v[k];
-    }
+    for (int k = 0; k < count; ++k) hits[begin + size_t(k)] = toRayHit(packetLaneHit(packet, k));
   }
 }
 

@@ -6,10 +6,10 @@
 
 #include "raytrace/tracer.h"
 #include "render/cube_capture.h"
-#include "scene/builtin_scenes.h"
-#include "shading/cubemap.h"
 #include "render/gpu_scene.h"
 #include "render/scene_passes.h"
+#include "scene/builtin_scenes.h"
+#include "shading/cubemap.h"
 #include "support/gl_test.h"
 #include "support/scenes.h"
 
@@ -18,21 +18,30 @@ namespace {
 
 class CubeCaptureTest : public GlTest {};
 
-TEST_F(CubeCaptureTest, BackgroundCaptureReproducesTheEnvironment) {
-  Scene scene = mirrorSphereInSky();
-  EnvironmentMap env = EnvironmentMap::sky(scene.light, 32);
+// Captures `scene` from `centre` into a size^3 cube: the environment, and the diffuse objects
+// when `diffuse` (reflectors are never drawn). Returns the six faces' level-0 texels, face-major.
+std::vector<vec4> captureCube(const Scene& scene, const EnvironmentMap& env, const vec3& centre,
+                              int size, bool diffuse) {
   GpuScene gpu(scene, env);
   ScenePasses passes(gpu);
-  const int size = 32;
   gpu::Texture cube = gpu::Texture::createCube(GL_RGBA32F, size);
   CubeCapture capture(size);
-  capture.capture(cube, 0, vec3(0.0f), 0.01f, 100.0f, [&](const View& v) {
+  capture.capture(cube, 0, centre, 0.01f, 1000.0f, [&](const View& v) {
     passes.begin(v, FrameSettings{});
     passes.drawBackground();
+    if (diffuse) passes.drawDiffuse();
   });
   std::vector<vec4> pixels(size_t(size * size * 6));
   glGetTextureImage(cube.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(pixels.size() * sizeof(vec4)),
                     pixels.data());
+  return pixels;
+}
+
+TEST_F(CubeCaptureTest, BackgroundCaptureReproducesTheEnvironment) {
+  Scene scene = mirrorSphereInSky();
+  EnvironmentMap env = EnvironmentMap::sky(scene.light, 32);
+  const int size = 32;
+  const std::vector<vec4> pixels = captureCube(scene, env, vec3(0.0f), size, false);
   double worst = 0.0, sum = 0.0;
   for (int f = 0; f < 6; ++f)
     for (int y = 0; y < size; ++y)
@@ -56,20 +65,12 @@ TEST_F(CubeCaptureTest, DiffuseCaptureMatchesRaysTracedFromTheProbeCentre) {
   Scene scene = makeBuiltinScene("sphere-over-checker");
   const std::vector<int> reflectors = scene.reflectorInstances();
   ASSERT_EQ(reflectors.size(), 1u);
-  const vec3 centre = vec3(scene.instances[size_t(reflectors[0])].matrixAt(0.0f) * vec4(0, 0, 0, 1));
+  const vec3 centre =
+      vec3(scene.instances[size_t(reflectors[0])].matrixAt(0.0f) * vec4(0, 0, 0, 1));
   EnvironmentMap env = EnvironmentMap::sky(scene.light, 64);
-  GpuScene gpu(scene, env);
-  ScenePasses passes(gpu);
   const int size = 64;
-  gpu::Texture cube = gpu::Texture::createCube(GL_RGBA32F, size);
-  CubeCapture capture(size);
-  capture.capture(cube, 0, centre, 0.01f, 1000.0f, [&](const View& v) {
-    passes.begin(v, FrameSettings{});
-    passes.drawDirect();  // background and diffuse objects: the sphere itself is not drawn
-  });
-  std::vector<vec4> pixels(size_t(size * size * 6));
-  glGetTextureImage(cube.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(pixels.size() * sizeof(vec4)),
-                    pixels.data());
+  // Background and diffuse objects: the sphere itself is not drawn.
+  const std::vector<vec4> pixels = captureCube(scene, env, centre, size, true);
 
   // The same scene without the sphere, traced from its centre through every texel centre.
   Scene diffuse_only = scene;
