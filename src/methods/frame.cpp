@@ -35,6 +35,8 @@ void FrameRenderer::render(Method& method, const View& view, float time,
   frame.beginPart(gpu::Part::kUpdate);
   gpu_->setTime(time);
   method.update(frame);
+  // The clear is part of drawing the frame, not of bringing captures up to date.
+  frame.beginPart(gpu::Part::kDirect);
   target_.bind();
   target_.clear();
   passes_->begin(view, settings);

@@ -59,8 +59,9 @@ class Method {
   // Brings captures and builds up to date with the scene at gpu.time(): rebuild only what
   // changed since the last call (a camera move alone changes nothing a method captures).
   virtual void update(FrameContext& frame) = 0;
-  // Draws the frame into frame.target (already bound and cleared): the direct part (timer part
-  // kDirect), then the reflections (kReflect).
+  // Draws the frame into frame.target (already bound and cleared): the direct part (the timer
+  // is already in part kDirect, which holds the clear too), then the reflections after
+  // frame.beginPart(kReflect).
   virtual void render(FrameContext& frame) = 0;
   // The reflection order this method produces when K is requested.
   virtual int orderRendered(int requested) const { return std::min(requested, info().max_order); }

@@ -37,7 +37,6 @@ class EnvmapMethod final : public Method {
   }
 
   void render(FrameContext& frame) override {
-    frame.beginPart(gpu::Part::kDirect);
     frame.passes.drawDirect();
     frame.beginPart(gpu::Part::kReflect);
     if (frame.settings.order == 0) {

@@ -13,7 +13,6 @@ class NoneMethod final : public Method {
   const MethodInfo& info() const override { return info_; }
   void update(FrameContext&) override {}
   void render(FrameContext& frame) override {
-    frame.beginPart(gpu::Part::kDirect);
     frame.passes.drawDirect();
     frame.beginPart(gpu::Part::kReflect);
     frame.passes.drawReflectors(program_);

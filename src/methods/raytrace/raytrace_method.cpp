@@ -24,7 +24,6 @@ class RaytraceMethod final : public Method {
   }
 
   void render(FrameContext& frame) override {
-    frame.beginPart(gpu::Part::kDirect);
     // Into the kept images: a fresh 7-15 MB image per frame costs page faults (docs/benchmarks.md).
     TraceResult& result = result_;
     tracer_.render(frame.view, {frame.settings.order, spp_}, result);
