@@ -16,6 +16,7 @@ const std::vector<MethodEntry>& methodRegistry() {
       noneMethodEntry(),
       envmapInfiniteMethodEntry(),
       envmapMethodEntry(),
+      envmapBoxMethodEntry(),
       raytraceMethodEntry(),
   };
   return registry;

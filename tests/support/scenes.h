@@ -23,4 +23,25 @@ inline Scene mirrorSphereInSky() {
   return s;
 }
 
+// A mirror sphere off-centre in an empty, closed checker room: the room is its own box proxy, so
+// a probe at the sphere's centre looked up through that box sees exactly what each reflected ray
+// reaches (envmap-box is exact here but for texture sampling).
+inline Scene mirrorSphereInRoom() {
+  Scene s;
+  s.name = "mirror-sphere-in-room";
+  int room = addMesh(s, procedural::box({3.0f, 2.0f, 3.0f}, true));
+  int walls = addMaterial(s, Material::checker("walls", kCheckerLight, {0.25f, 0.35f, 0.6f}, 1.0f));
+  addInstance(s, "room", room, walls, placeAt({0.0f, 2.0f, 0.0f}));
+  int sphere = addMesh(s, procedural::sphere(0.7f, 128, 64));
+  int mirror = addMaterial(s, Material::mirror("mirror"));
+  addInstance(s, "sphere", sphere, mirror, placeAt({0.8f, 1.2f, -0.6f}));
+  CameraDesc c;
+  c.position = {-1.5f, 2.2f, 2.4f};
+  c.target = {0.8f, 1.2f, -0.6f};
+  c.fov_y_degrees = 50.0f;
+  s.cameras.push_back(c);
+  s.validate();
+  return s;
+}
+
 }  // namespace mirage::test

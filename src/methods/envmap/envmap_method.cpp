@@ -2,21 +2,30 @@
 
 #include <algorithm>
 
+#include "gpu/buffer.h"
 #include "render/cube_capture.h"
 
 namespace mirage {
 
 namespace {
 
+enum class Variant { kProbes, kBox, kInfinite };
+
+std::vector<std::string> shaderDefines(Variant variant) {
+  if (variant == Variant::kInfinite) return {"ENVMAP_INFINITE 1"};
+  if (variant == Variant::kBox) return {"ENVMAP_BOX 1"};
+  return {};
+}
+
 class EnvmapMethod final : public Method {
  public:
-  EnvmapMethod(const MethodSetup& setup, bool infinite)
+  EnvmapMethod(const MethodSetup& setup, Variant variant)
       : info_(setup.info),
-        infinite_(infinite),
-        size_(infinite ? 0 : setup.params.integer("envmap-size")),
-        program_(gpu::Program::graphics(
-            "render/shaders/scene.vert", "methods/envmap/envmap.frag",
-            infinite ? std::vector<std::string>{"ENVMAP_INFINITE 1"} : std::vector<std::string>{})),
+        variant_(variant),
+        infinite_(variant == Variant::kInfinite),
+        size_(infinite_ ? 0 : setup.params.integer("envmap-size")),
+        program_(gpu::Program::graphics("render/shaders/scene.vert", "methods/envmap/envmap.frag",
+                                        shaderDefines(variant))),
         base_program_(
             gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")) {}
 
@@ -44,6 +53,8 @@ class EnvmapMethod final : public Method {
       return;
     }
     if (!infinite_) probes_[final_].bind(MIRAGE_UNIT_METHOD);
+    if (variant_ == Variant::kBox)
+      centres_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_METHOD_SSBO);
     frame.passes.drawReflectors(program_);
   }
 
@@ -52,7 +63,15 @@ class EnvmapMethod final : public Method {
   }
 
   std::map<std::string, double> stats() const override {
-    return {{"cube_captures", double(cube_captures_)}, {"capture_passes", double(capture_passes_)}};
+    std::map<std::string, double> s = {{"cube_captures", double(cube_captures_)},
+                                       {"capture_passes", double(capture_passes_)}};
+    if (variant_ == Variant::kBox) {
+      const vec3 e = box_.extent();
+      s["proxy_box_x"] = e.x;
+      s["proxy_box_y"] = e.y;
+      s["proxy_box_z"] = e.z;
+    }
+    return s;
   }
 
  private:
@@ -71,6 +90,7 @@ class EnvmapMethod final : public Method {
     Bounds3 bounds = scene.bounds(frame.gpu.time());
     float radius = std::max(bounds.radius(), 1e-3f);
     float near_plane = 1e-3f * radius, far_plane = 100.0f * radius;
+    if (variant_ == Variant::kBox) setUpBox(frame, reflectors);
     int passes = reflectors.size() > 1 ? order : 1;
     for (int pass = 0; pass < passes; ++pass) {
       int write = pass % 2, read = 1 - write;
@@ -92,11 +112,33 @@ class EnvmapMethod final : public Method {
     }
   }
 
+  // The proxy of `envmap-box`: the bounds of the diffuse objects (the room), grown to hold every
+  // probe centre, and the probe centres for the shader.
+  void setUpBox(FrameContext& frame, const std::vector<int>& reflectors) {
+    const Scene& scene = frame.gpu.scene();
+    box_ = Bounds3{};
+    for (size_t i = 0; i < scene.instances.size(); ++i)
+      if (!scene.isReflector(int(i))) box_.extend(frame.gpu.instanceBounds(int(i)));
+    std::vector<vec4> centres;
+    for (int instance : reflectors) {
+      vec3 c = frame.gpu.instanceBounds(instance).center();
+      centres.push_back(vec4(c, 1.0f));
+      box_.extend(c);
+    }
+    centres_.upload(std::span<const vec4>(centres));
+    centres_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_METHOD_SSBO);
+    program_.set("u_box_min", box_.lo);
+    program_.set("u_box_max", box_.hi);
+  }
+
   const MethodInfo& info_;
+  Variant variant_;
   bool infinite_;
   int size_;
   gpu::Program program_, base_program_;
   gpu::Texture probes_[2];
+  gpu::Buffer centres_;  // envmap-box: vec4 probe centre per reflector
+  Bounds3 box_;          // envmap-box: the proxy
   int final_ = 0;
   std::unique_ptr<CubeCapture> cube_;
   bool captured_ = false, captured_mip_ = false;
@@ -115,7 +157,21 @@ MethodEntry envmapMethodEntry() {
   entry.info.params = {ParamSpec::integer("envmap-size", 8, 2048, 256,
                                           "face size of each reflector's cube map, in texels")};
   entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
-    return std::make_unique<EnvmapMethod>(setup, false);
+    return std::make_unique<EnvmapMethod>(setup, Variant::kProbes);
+  };
+  return entry;
+}
+
+MethodEntry envmapBoxMethodEntry() {
+  MethodEntry entry;
+  entry.info.name = "envmap-box";
+  entry.info.description =
+      "the reflection probes looked up through a box proxy of the room (parallax-corrected cube "
+      "map)";
+  entry.info.params = {ParamSpec::integer("envmap-size", 8, 2048, 256,
+                                          "face size of each reflector's cube map, in texels")};
+  entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
+    return std::make_unique<EnvmapMethod>(setup, Variant::kBox);
   };
   return entry;
 }
@@ -126,7 +182,7 @@ MethodEntry envmapInfiniteMethodEntry() {
   entry.info.description = "the scene's distant environment only (light probe at infinity)";
   entry.info.max_order = 1;
   entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
-    return std::make_unique<EnvmapMethod>(setup, true);
+    return std::make_unique<EnvmapMethod>(setup, Variant::kInfinite);
   };
   return entry;
 }
