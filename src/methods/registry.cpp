@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include "core/error.h"
+#include "methods/billboard/billboard_method.h"
 #include "methods/envmap/envmap_method.h"
 #include "methods/method.h"
 #include "methods/none/none_method.h"
@@ -17,6 +18,7 @@ const std::vector<MethodEntry>& methodRegistry() {
       envmapInfiniteMethodEntry(),
       envmapMethodEntry(),
       envmapBoxMethodEntry(),
+      billboardMethodEntry(),
       raytraceMethodEntry(),
   };
   return registry;

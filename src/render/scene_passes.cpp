@@ -58,6 +58,11 @@ void ScenePasses::drawDiffuse(int exclude) const {
     if (i != exclude && !s.isReflector(i)) scene_.draw(i);
 }
 
+void ScenePasses::drawDiffuseInstances(std::span<const int> instances) const {
+  diffuse_.use();
+  for (int i : instances) scene_.draw(i);
+}
+
 void ScenePasses::drawReflectors(const gpu::Program& program, int exclude) const {
   program.use();
   const Scene& s = scene_.scene();

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <span>
 
 #include "core/camera.h"
 #include "gpu/buffer.h"
@@ -34,6 +35,8 @@ class ScenePasses {
   void drawBackground() const;
   // All diffuse instances except `exclude`.
   void drawDiffuse(int exclude = -1) const;
+  // The given diffuse instances only.
+  void drawDiffuseInstances(std::span<const int> instances) const;
   // All reflector instances except `exclude`, with a method's reflector program.
   void drawReflectors(const gpu::Program& program, int exclude = -1) const;
   // Background and diffuse objects: the direct part of a frame.

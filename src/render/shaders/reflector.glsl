@@ -10,6 +10,9 @@
 // methods can filter lookups (textureGrad) inside loops and branches.
 vec3 g_dRdx = vec3(0.0f);
 vec3 g_dRdy = vec3(0.0f);
+// ... and of the shaded point: with the direction's, the reflected ray's differential.
+vec3 g_dPdx = vec3(0.0f);
+vec3 g_dPdy = vec3(0.0f);
 
 // The scene's distant environment along `direction`, filtered by the reflected ray's footprint
 // when mip-mapping is on.
@@ -35,6 +38,8 @@ void main() {
   vec3 r = reflect_direction(-to_viewer, n);
   g_dRdx = dFdx(r);
   g_dRdy = dFdy(r);
+  g_dPdx = dFdx(p);
+  g_dPdy = dFdy(p);
   vec4 reflected = reflected_radiance(p, r, n, v_in.ids.y);
   float cos_theta = max(dot(n, to_viewer), 0.0f);
   out_color = vec4(shade_reflector(m, cos_theta, reflected.a, reflected.rgb), eye_distance());

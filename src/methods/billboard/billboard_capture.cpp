@@ -1,0 +1,95 @@
+#include "methods/billboard/billboard_capture.h"
+
+namespace mirage {
+
+namespace {
+
+bool sameCamera(const CameraDesc& a, const CameraDesc& b) {
+  return a.position == b.position && a.target == b.target && a.up == b.up &&
+         a.fov_y_degrees == b.fov_y_degrees && a.near_plane == b.near_plane &&
+         a.far_plane == b.far_plane;
+}
+
+}  // namespace
+
+bool BillboardCapture::Key::operator==(const Key& o) const {
+  return sameCamera(camera, o.camera) && object == o.object && light_dir == o.light_dir &&
+         light_color == o.light_color && ambient == o.ambient;
+}
+
+BillboardCapture::BillboardCapture(int size)
+    : size_(size),
+      depth_(gpu::Texture::create2D(GL_DEPTH_COMPONENT32F, size, size)),
+      diffuse_program_(gpu::Program::graphics("render/shaders/scene.vert",
+                                              "methods/billboard/capture_diffuse.frag")),
+      reflector_program_(gpu::Program::graphics("render/shaders/scene.vert",
+                                                "methods/billboard/capture_reflector.frag")) {
+  fbo_.attachDepth(depth_);
+}
+
+BillboardCapture::Key BillboardCapture::keyOf(const GpuScene& gpu, const BillboardSpec& b) const {
+  const Light& light = gpu.scene().light;
+  return {b.camera, gpu.instanceMatrix(b.object), light.direction, light.color, light.ambient};
+}
+
+void BillboardCapture::allocate(const BillboardSet& set) {
+  const int levels = gpu::Texture::fullMipLevels(size_);
+  const int colors = std::max(set.color_layers, 1), reflective = std::max(set.reflective_layers, 1);
+  if (colors_.layers() != colors)
+    colors_ = gpu::Texture::create2DArray(GL_RGBA16F, size_, size_, colors, levels);
+  if (normals_.layers() != reflective) {
+    normals_ = gpu::Texture::create2DArray(GL_RGBA16F, size_, size_, reflective, 1);
+    positions_ = gpu::Texture::create2DArray(GL_RGBA32F, size_, size_, reflective, 1);
+  }
+  if (keys_.size() != set.billboards.size()) {
+    keys_.assign(set.billboards.size(), Key{});
+    valid_.assign(set.billboards.size(), false);
+  }
+}
+
+int BillboardCapture::update(GpuScene& gpu, ScenePasses& passes, const BillboardSet& set,
+                             const FrameSettings& settings) {
+  allocate(set);
+  int captured = 0;
+  bool colors_changed = false;
+  for (size_t i = 0; i < set.billboards.size(); ++i) {
+    const BillboardSpec& b = set.billboards[i];
+    Key key = keyOf(gpu, b);
+    if (valid_[i] && keys_[i] == key) continue;
+    capture(gpu, passes, b, settings);
+    keys_[i] = key;
+    valid_[i] = true;
+    ++captured;
+    colors_changed |= b.kind != BillboardSpec::Kind::kReflective;
+  }
+  if (colors_changed) colors_.generateMipmaps();
+  captures_ += captured;
+  return captured;
+}
+
+void BillboardCapture::capture(GpuScene& gpu, ScenePasses& passes, const BillboardSpec& b,
+                               const FrameSettings& settings) {
+  const bool reflective = b.kind == BillboardSpec::Kind::kReflective;
+  if (reflective) {
+    fbo_.attachColor(0, normals_, 0, b.layer);
+    fbo_.attachColor(2, positions_, 0, b.layer);
+    const GLenum buffers[3] = {GL_COLOR_ATTACHMENT0, GL_NONE, GL_COLOR_ATTACHMENT2};
+    glNamedFramebufferDrawBuffers(fbo_.id(), 3, buffers);
+  } else {
+    fbo_.attachColor(0, colors_, 0, b.layer);
+    fbo_.setDrawBuffers(1);
+  }
+  fbo_.checkComplete("billboard capture");
+  fbo_.bind();
+  glViewport(0, 0, size_, size_);
+  const float clear[4] = {0, 0, 0, 0};
+  const float far_depth = 1.0f;
+  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, clear);
+  if (reflective) glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 2, clear);
+  glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &far_depth);
+  passes.begin(View(b.camera, {size_, size_}), settings);
+  (reflective ? reflector_program_ : diffuse_program_).use();
+  gpu.draw(b.object);
+}
+
+}  // namespace mirage

@@ -1,0 +1,54 @@
+// Renders the textures of a BillboardSet and keeps them up to date: a billboard is re-captured
+// only when what it shows changed (its object or the reflector it faces moved, so its capture
+// camera or the object's transform differ, or the lighting changed) — never for a view change.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "gpu/framebuffer.h"
+#include "gpu/program.h"
+#include "gpu/texture.h"
+#include "methods/billboard/billboard_set.h"
+#include "render/gpu_scene.h"
+#include "render/scene_passes.h"
+
+namespace mirage {
+
+class BillboardCapture {
+ public:
+  explicit BillboardCapture(int size);
+
+  // Captures what changed since the last call; returns the number of billboards captured.
+  int update(GpuScene& gpu, ScenePasses& passes, const BillboardSet& set,
+             const FrameSettings& settings);
+
+  const gpu::Texture& colors() const { return colors_; }        // diffuse: RGBA16F, mip-mapped
+  const gpu::Texture& normals() const { return normals_; }      // reflective: normal + alpha
+  const gpu::Texture& positions() const { return positions_; }  // reflective: surface point
+  long captures() const { return captures_; }
+  int size() const { return size_; }
+
+ private:
+  // What a billboard's texture depends on; equal keys mean an up-to-date texture.
+  struct Key {
+    CameraDesc camera;
+    mat4 object{0.0f};
+    vec3 light_dir{0.0f}, light_color{0.0f}, ambient{0.0f};
+    bool operator==(const Key& o) const;
+  };
+  Key keyOf(const GpuScene& gpu, const BillboardSpec& b) const;
+  void allocate(const BillboardSet& set);
+  void capture(GpuScene& gpu, ScenePasses& passes, const BillboardSpec& b,
+               const FrameSettings& settings);
+
+  int size_;
+  gpu::Texture colors_, normals_, positions_, depth_;
+  gpu::Framebuffer fbo_;
+  gpu::Program diffuse_program_, reflector_program_;
+  std::vector<Key> keys_;
+  std::vector<bool> valid_;
+  long captures_ = 0;
+};
+
+}  // namespace mirage

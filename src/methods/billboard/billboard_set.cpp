@@ -1,0 +1,172 @@
+#include "methods/billboard/billboard_set.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mirage {
+
+namespace {
+
+Bounds3 worldBounds(const Scene& scene, int instance, const mat4& model) {
+  return scene.meshes[size_t(scene.instances[size_t(instance)].mesh)].bounds().transformed(model);
+}
+
+// A square billboard through `centre`, facing `towards` (unit, from the centre to the capture
+// camera), captured by a camera of `fov` degrees at `distance`, with the camera's up near
+// `up_hint`. Its half-size is the camera's half-width at the centre.
+BillboardSpec facingBillboard(const vec3& centre, const vec3& towards, float distance, float fov,
+                              float near_plane, float far_plane, const vec3& up_hint) {
+  BillboardSpec b;
+  b.camera.name = "billboard";
+  b.camera.position = centre + towards * distance;
+  b.camera.target = centre;
+  b.camera.up = std::abs(glm::dot(up_hint, towards)) > 0.95f
+                    ? (std::abs(towards.y) > 0.9f ? vec3(0, 0, -1) : vec3(0, 1, 0))
+                    : up_hint;
+  b.camera.fov_y_degrees = fov;
+  b.camera.near_plane = near_plane;
+  b.camera.far_plane = far_plane;
+  const View view(b.camera, {1, 1});
+  const float half = distance * std::tan(glm::radians(fov) * 0.5f);
+  b.corner = centre - half * view.right() - half * view.up();
+  b.edge_u = 2.0f * half * view.right();
+  b.edge_v = 2.0f * half * view.up();
+  return b;
+}
+
+// The billboard of a volume (bounding sphere centre, radius) seen from `viewer`.
+BillboardSpec volumeBillboard(const vec3& centre, float radius, const vec3& viewer, float fov) {
+  vec3 towards = viewer - centre;
+  towards =
+      glm::length(towards) > 1e-6f * (1.0f + radius) ? glm::normalize(towards) : vec3(0, 0, 1);
+  radius = std::max(radius, 1e-6f);
+  // The whole bounding sphere inside the cone of the camera.
+  const float distance = radius / std::sin(glm::radians(fov) * 0.5f);
+  return facingBillboard(centre, towards, distance, fov,
+                         std::max(distance - 1.01f * radius, 1e-4f * distance),
+                         distance + 1.01f * radius, vec3(0, 1, 0));
+}
+
+}  // namespace
+
+bool isPlanarInstance(const Scene& scene, int instance, const mat4& model, vec3* normal) {
+  const Bounds3 b = scene.meshes[size_t(scene.instances[size_t(instance)].mesh)].bounds();
+  if (b.empty()) return false;
+  const vec3 e = b.extent();
+  const int thin = e.x <= e.y && e.x <= e.z ? 0 : (e.y <= e.z ? 1 : 2);
+  if (!(e[thin] <= 1e-4f * std::max({e.x, e.y, e.z}))) return false;
+  if (normal) {
+    vec3 axis(0.0f);
+    axis[thin] = 1.0f;
+    *normal = glm::normalize(normalMatrix(model) * axis);
+  }
+  return true;
+}
+
+BillboardSet placeBillboards(const Scene& scene, const std::vector<mat4>& matrices,
+                             const BillboardSetOptions& options) {
+  BillboardSet set;
+  const std::vector<int> reflectors = scene.reflectorInstances();
+  const int r_count = int(reflectors.size());
+  std::vector<vec3> reflector_centre(size_t(r_count), vec3(0.0f));
+  std::vector<float> reflector_radius(size_t(r_count), 0.0f);
+  vec3 reflectors_centroid(0.0f);
+  for (int k = 0; k < r_count; ++k) {
+    Bounds3 b = worldBounds(scene, reflectors[size_t(k)], matrices[size_t(reflectors[size_t(k)])]);
+    reflector_centre[size_t(k)] = b.center();
+    reflector_radius[size_t(k)] = b.radius();
+    reflectors_centroid += b.center() / float(r_count);
+  }
+
+  std::vector<int> planar, objects;
+  for (int i = 0; i < int(scene.instances.size()); ++i) {
+    if (scene.isReflector(i)) continue;
+    if (isPlanarInstance(scene, i, matrices[size_t(i)]))
+      planar.push_back(i);
+    else if (options.objects)
+      objects.push_back(i);
+    else
+      set.unbillboarded.push_back(i);
+  }
+
+  // Planar objects: their own square, captured head-on from the reflectors' side.
+  std::vector<int> planar_index;
+  for (int i : planar) {
+    const mat4& m = matrices[size_t(i)];
+    vec3 n;
+    isPlanarInstance(scene, i, m, &n);
+    const Bounds3 local = scene.meshes[size_t(scene.instances[size_t(i)].mesh)].bounds();
+    const vec3 e = local.extent();
+    const int thin = e.x <= e.y && e.x <= e.z ? 0 : (e.y <= e.z ? 1 : 2);
+    const int a1 = (thin + 1) % 3, a2 = (thin + 2) % 3;
+    vec3 axis1(0.0f), axis2(0.0f);
+    axis1[a1] = e[a1];
+    axis2[a2] = e[a2];
+    const vec3 side1 = mat3(m) * axis1, side2 = mat3(m) * axis2;
+    const vec3 centre = transformPoint(m, local.center());
+    if (r_count > 0 && glm::dot(reflectors_centroid - centre, n) < 0.0f) n = -n;
+    const float half = 0.5f * std::max({glm::length(side1), glm::length(side2), 1e-6f});
+    const float distance = half / std::tan(glm::radians(options.fov_degrees) * 0.5f);
+    vec3 up = glm::length(side2) > 0.0f ? glm::normalize(side2) : vec3(0, 1, 0);
+    BillboardSpec b = facingBillboard(centre, n, distance, options.fov_degrees, 0.5f * distance,
+                                      1.5f * distance, up);
+    b.kind = BillboardSpec::Kind::kPlanar;
+    b.object = i;
+    b.layer = set.color_layers++;
+    planar_index.push_back(int(set.billboards.size()));
+    set.billboards.push_back(b);
+  }
+
+  set.ranges.resize(size_t(r_count));
+  for (int r = 0; r < r_count; ++r) {
+    const vec3 viewer = reflector_centre[size_t(r)];
+    shading::BillboardRange& range = set.ranges[size_t(r)];
+    range.range.x = int(set.entries.size());
+    for (int index : planar_index) set.entries.push_back(index);
+    for (int i : objects) {
+      const Bounds3 b = worldBounds(scene, i, matrices[size_t(i)]);
+      BillboardSpec spec = volumeBillboard(b.center(), b.radius(), viewer, options.fov_degrees);
+      spec.kind = BillboardSpec::Kind::kObject;
+      spec.object = i;
+      spec.reflector = r;
+      spec.layer = set.color_layers++;
+      set.entries.push_back(int(set.billboards.size()));
+      set.billboards.push_back(spec);
+    }
+    range.range.y = int(set.entries.size()) - range.range.x;
+    range.range.z = int(set.entries.size());
+    for (int k = 0; k < r_count; ++k) {
+      if (k == r) continue;
+      BillboardSpec spec = volumeBillboard(reflector_centre[size_t(k)], reflector_radius[size_t(k)],
+                                           viewer, options.fov_degrees);
+      spec.kind = BillboardSpec::Kind::kReflective;
+      spec.object = reflectors[size_t(k)];
+      spec.reflector = r;
+      spec.represents = k;
+      spec.layer = set.reflective_layers++;
+      set.entries.push_back(int(set.billboards.size()));
+      set.billboards.push_back(spec);
+    }
+    range.range.w = int(set.entries.size()) - range.range.z;
+  }
+  return set;
+}
+
+std::vector<shading::BillboardData> BillboardSet::gpuData(const Scene& scene) const {
+  std::vector<shading::BillboardData> data;
+  data.reserve(billboards.size());
+  for (const BillboardSpec& b : billboards) {
+    shading::BillboardData d{};
+    d.corner = vec4(b.corner, 0.0f);
+    d.edge_u = vec4(b.edge_u, 0.0f);
+    d.edge_v = vec4(b.edge_v, 0.0f);
+    const bool reflective = b.kind == BillboardSpec::Kind::kReflective;
+    d.info = ivec4(reflective ? MIRAGE_BILLBOARD_REFLECTIVE : MIRAGE_BILLBOARD_DIFFUSE, b.layer,
+                   reflective ? b.represents : -1,
+                   reflective ? scene.instances[size_t(b.object)].material : -1);
+    data.push_back(d);
+  }
+  return data;
+}
+
+}  // namespace mirage

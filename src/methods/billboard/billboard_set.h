@@ -1,0 +1,61 @@
+// Which billboards a scene needs and where they stand (the impostor paper, §3), computed on the
+// CPU from the scene at a time; billboard_capture.h renders their textures.
+//
+//  - A planar diffuse object (floor, table top, wall) is its own billboard: a square in its
+//    plane, shared by every reflector, captured head-on (exact: a pinhole camera facing a plane
+//    images it without distortion).
+//  - Any other diffuse object gets one billboard per reflector: the plane through the object's
+//    centre B perpendicular to the line from B to the reflector's centre, captured by a narrow
+//    camera (10 degrees by default) on that line, from the reflector's side, framing the
+//    object's bounding sphere.
+//  - Each reflector k gets one reflective billboard per other reflector i, placed like a
+//    diffuse billboard of k for i: a ray leaving i tests the R - 1 billboards of the others,
+//    never its own, and after bouncing off k it tests the billboards built for k.
+#pragma once
+
+#include <vector>
+
+#include "core/bounds.h"
+#include "core/camera.h"
+#include "methods/billboard/billboard_shared.h"
+#include "scene/scene.h"
+
+namespace mirage {
+
+struct BillboardSpec {
+  enum class Kind { kPlanar, kObject, kReflective };
+  Kind kind = Kind::kObject;
+  int object = -1;      // the instance it stands for
+  int reflector = -1;   // the reflector (0-based) whose rays test it; -1 for planar (all)
+  int represents = -1;  // reflective: the reflector (0-based) it stands for
+  CameraDesc camera;    // captures its texture: square image, up = edge_v, right = edge_u
+  vec3 corner{0.0f}, edge_u{0.0f}, edge_v{0.0f};
+  int layer = -1;  // in the colour (diffuse) or normal/position (reflective) arrays
+};
+
+struct BillboardSetOptions {
+  float fov_degrees = 10.0f;  // the capture camera's field of view (objects, reflectors)
+  bool objects = true;        // billboards for non-planar diffuse objects too (else planar only)
+};
+
+struct BillboardSet {
+  std::vector<BillboardSpec> billboards;
+  // Per reflector (0-based): the entries its rays test, into `entries`.
+  std::vector<shading::BillboardRange> ranges;
+  std::vector<int> entries;
+  int color_layers = 0, reflective_layers = 0;
+  // Diffuse instances with no billboard (they go into the captured environment).
+  std::vector<int> unbillboarded;
+
+  std::vector<shading::BillboardData> gpuData(const Scene& scene) const;
+};
+
+// The instance's mesh is flat (its thinnest bounds extent below 1e-4 of its largest): then
+// `normal` receives its world-space plane normal.
+bool isPlanarInstance(const Scene& scene, int instance, const mat4& model, vec3* normal = nullptr);
+
+// The billboards of `scene` with instances placed by `matrices` (one per instance).
+BillboardSet placeBillboards(const Scene& scene, const std::vector<mat4>& matrices,
+                             const BillboardSetOptions& options);
+
+}  // namespace mirage
