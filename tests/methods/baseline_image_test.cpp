@@ -7,6 +7,7 @@
 #include "raytrace/tracer.h"
 #include "support/gl_test.h"
 #include "support/image_check.h"
+#include "support/render_pair.h"
 #include "support/scenes.h"
 
 namespace mirage::test {
@@ -14,23 +15,10 @@ namespace {
 
 class BaselineImages : public GlTest {};
 
-struct Pair {
-  Image gpu, cpu;
-  IdImage gpu_ids, cpu_ids;
-};
+using Pair = RenderPair;
 
-// Renders `method` on the GPU and the ray tracer at the same order; both display-encoded.
 Pair renderBoth(const Scene& scene, const std::string& method, ivec2 size, FrameSettings settings) {
-  FrameRenderer renderer(scene, size);
-  View view(scene.camera(), size);
-  auto m = renderer.createMethod(method, {}, settings);
-  renderer.render(*m, view, 0.0f, settings);
-  RenderedFrame frame = renderer.read();
-  RayTracer tracer(scene, renderer.environment());
-  tracer.prepare(0.0f);
-  TraceResult truth = tracer.render(view, {settings.order, 1});
-  DisplaySettings display{1.0f, ToneMap::kAces};
-  return {toDisplay(frame.color, display), toDisplay(truth.color, display), frame.ids, truth.ids};
+  return renderWithTruth(scene, method, size, settings);
 }
 
 TEST_F(BaselineImages, EnvmapInfiniteEqualsRaytraceWithoutLocalObjects) {
@@ -136,7 +124,7 @@ TEST_F(BaselineImages, HigherOrderChangesOnlyReflectorPixels) {
   ivec2 size{240, 160};
   FrameRenderer renderer(scene, size);
   View view(scene.camera(), size);
-  for (const char* method : {"envmap", "raytrace"}) {
+  for (const char* method : {"envmap", "envmap-box", "billboard", "raytrace"}) {
     auto a = renderer.createMethod(method, {}, one);
     renderer.render(*a, view, 0.0f, one);
     RenderedFrame fa = renderer.read();

@@ -44,4 +44,28 @@ inline Scene mirrorSphereInRoom() {
   return s;
 }
 
+// Two mirror spheres and a box over a checker floor (a planar object): a small scene for the
+// billboard placement rules. `floor_only` leaves out the box and the second sphere.
+inline Scene spheresOverFloor(bool floor_only = false) {
+  Scene s;
+  s.name = "spheres-over-floor";
+  int floor = addMesh(s, procedural::quad(8.0f, 8.0f));
+  int checker = addMaterial(s, Material::checker("floor", kCheckerLight, kCheckerDark, 1.0f));
+  addInstance(s, "floor", floor, checker, {});
+  int sphere = addMesh(s, procedural::sphere(0.8f, 128, 64));
+  int mirror = addMaterial(s, Material::mirror("mirror"));
+  addInstance(s, "sphere-a", sphere, mirror, placeAt({0.0f, 1.0f, 0.0f}));
+  if (!floor_only) {
+    addInstance(s, "sphere-b", sphere, mirror, placeAt({2.2f, 1.0f, -0.5f}));
+    addBox(s, "box", {-1.8f, 0.5f, 0.6f}, vec3(0.5f), {0.85f, 0.2f, 0.15f}, 20.0f);
+  }
+  CameraDesc c;
+  c.position = {0.5f, 2.6f, 5.0f};
+  c.target = {0.5f, 0.8f, 0.0f};
+  c.fov_y_degrees = 45.0f;
+  s.cameras.push_back(c);
+  s.validate();
+  return s;
+}
+
 }  // namespace mirage::test

@@ -1,0 +1,22 @@
+// A method's frame and the ray tracer's frame of the same view at the same order, both
+// display-encoded, with both ID buffers: what the image tests compare.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "core/image.h"
+#include "methods/frame.h"
+
+namespace mirage::test {
+
+struct RenderPair {
+  Image gpu, cpu;
+  IdImage gpu_ids, cpu_ids;
+};
+
+RenderPair renderWithTruth(const Scene& scene, const std::string& method, ivec2 size,
+                           const FrameSettings& settings,
+                           const std::map<std::string, std::string>& params = {});
+
+}  // namespace mirage::test
