@@ -15,6 +15,9 @@ std::unique_ptr<Method> FrameRenderer::createMethod(const std::string& name,
                                                     const std::map<std::string, std::string>& given,
                                                     const FrameSettings& settings) {
   const MethodEntry& entry = findMethod(name);
+  if (settings.order < entry.info.min_order)
+    throwInput("method '{}': --order {} is out of range (allowed: {}..16)", name, settings.order,
+               entry.info.min_order);
   std::map<std::string, std::string> own;
   for (const ParamSpec& spec : entry.info.params)
     if (auto it = given.find(spec.name); it != given.end()) own[spec.name] = it->second;

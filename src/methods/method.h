@@ -24,6 +24,7 @@ struct MethodInfo {
   std::string name;
   std::string description;
   int max_order = kAnyOrder;  // the highest reflection order it can produce
+  int min_order = 0;          // the lowest --order it accepts (billboards need a reflection)
   bool gpu = true;            // false: renders on the CPU (the ray tracer)
   std::vector<ParamSpec> params;
 };

@@ -14,12 +14,8 @@ namespace mirage {
 
 const std::vector<MethodEntry>& methodRegistry() {
   static const std::vector<MethodEntry> registry = {
-      noneMethodEntry(),
-      envmapInfiniteMethodEntry(),
-      envmapMethodEntry(),
-      envmapBoxMethodEntry(),
-      billboardMethodEntry(),
-      raytraceMethodEntry(),
+      noneMethodEntry(),      envmapInfiniteMethodEntry(), envmapMethodEntry(),
+      envmapBoxMethodEntry(), billboardMethodEntry(),      raytraceMethodEntry(),
   };
   return registry;
 }

@@ -81,6 +81,16 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"compare --scene sphere-over-checker --methods envmap,nope -o d",
                  "unknown method 'nope'"},
         BadInput{"bench --scene sphere-over-checker --frames 0 --json b.json", "1..1000000"},
+        BadInput{"render --scene sphere-over-checker --method billboard --order 0 -o x.png",
+                 "1..16"},
+        BadInput{
+            "render --scene sphere-over-checker --method billboard --billboard-size 0 -o x.png",
+            "16..4096"},
+        BadInput{"render --scene spheres9 --method billboard --billboard-size 1000000 -o x.png",
+                 "16..4096"},
+        BadInput{"render --scene spheres9 --method billboard --billboard-fov 0 -o x.png", "1..60"},
+        BadInput{"render --scene spheres9 --method billboard --billboard-objects some -o x.png",
+                 "planar"},
         BadInput{"frobnicate", "frobnicate"}));
 
 TEST(Cli, HelpExitsZero) {

@@ -119,6 +119,7 @@ MethodEntry billboardMethodEntry() {
   entry.info.name = "billboard";
   entry.info.description =
       "billboard impostors: diffuse and reflective billboards to order K (impostor paper, §3)";
+  entry.info.min_order = 1;
   entry.info.params = {
       ParamSpec::integer("billboard-size", 16, 4096, 256,
                          "face size of each billboard texture, in texels"),
