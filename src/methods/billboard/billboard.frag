@@ -23,6 +23,12 @@ layout(binding = MIRAGE_UNIT_BILLBOARD_NORMAL) uniform sampler2DArray u_billboar
 layout(binding = MIRAGE_UNIT_BILLBOARD_POSITION) uniform sampler2DArray u_billboard_position;
 layout(binding = MIRAGE_UNIT_BILLBOARD_ENV) uniform samplerCube u_billboard_env;
 uniform int u_captured_env;  // 1: misses read u_billboard_env (objects without billboards)
+// The billboard-to-environment morph (§3.2; u_ground >= 0 when on): the ground billboard and its
+// transition walls form the box [u_morph_min, u_morph_max]; E = u_morph_centre.
+uniform int u_ground = -1;
+uniform vec3 u_morph_min;
+uniform vec3 u_morph_max;
+uniform vec3 u_morph_centre;
 
 BillboardData billboard_data(int index) { return billboards[index]; }
 int billboard_list_entry(int position) { return billboard_entries[position]; }
@@ -78,6 +84,28 @@ vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflecto
     if (bounce < order) {
       int reflective = nearest_billboard(origin, dir, range.z, range.w, t_min, t, uv);
       if (reflective >= 0) hit = reflective;
+    }
+    // The ground box, if nearer than every billboard: the ground billboard, the morph on a
+    // wall, the environment through the open top.
+    int face = -1;
+    float t_box = u_ground >= 0 ? ray_box_exit(origin, dir, u_morph_min, u_morph_max, face) : -1.0f;
+    if (t_box >= 0.0f && t_box < t && face != MIRAGE_BOX_MAX_Y) {
+      if (depth == 0) first_distance = t_box;
+      else stack_distance[depth - 1] = t_box;
+      if (face == MIRAGE_BOX_MIN_Y) {
+        BillboardData g = billboards[u_ground];
+        vec2 g_uv = vec2(0.0f);
+        float t_g = billboard_hit(g, origin, dir, 0.0f, g_uv);
+        vec2 duv_x = billboard_uv_differential(g, dir, t_g, dox, ddx);
+        vec2 duv_y = billboard_uv_differential(g, dir, t_g, doy, ddy);
+        radiance = diffuse_texel(g, clamp(g_uv, 0.0f, 1.0f), duv_x, duv_y);
+      } else {
+        vec3 a = origin + t_box * dir;
+        vec3 m = morph_direction(a, u_morph_centre, dir, a.y - u_morph_min.y,
+                                 u_morph_max.y - u_morph_min.y);
+        radiance = miss_radiance(m, ddx, ddy);
+      }
+      break;
     }
     float distance = hit >= 0 ? t : MISS_DISTANCE;
     if (depth == 0) first_distance = distance;

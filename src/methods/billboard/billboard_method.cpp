@@ -16,7 +16,8 @@ class BillboardMethod final : public Method {
   explicit BillboardMethod(const MethodSetup& setup)
       : info_(setup.info),
         options_{float(setup.params.real("billboard-fov")),
-                 setup.params.text("billboard-objects") == "all"},
+                 setup.params.text("billboard-objects") == "all",
+                 float(setup.params.real("morph-height"))},
         env_size_(setup.params.integer("envmap-size")),
         capture_(setup.params.integer("billboard-size")),
         program_(gpu::Program::graphics("render/shaders/scene.vert",
@@ -53,9 +54,15 @@ class BillboardMethod final : public Method {
     capture_.colors().bind(MIRAGE_UNIT_BILLBOARD_COLOR);
     capture_.normals().bind(MIRAGE_UNIT_BILLBOARD_NORMAL);
     capture_.positions().bind(MIRAGE_UNIT_BILLBOARD_POSITION);
-    const bool captured_env = !set_.unbillboarded.empty();
+    const bool captured_env = !set_.environmentInstances().empty();
     (captured_env ? environment_ : frame.gpu.environment()).bind(MIRAGE_UNIT_BILLBOARD_ENV);
     program_.set("u_captured_env", captured_env ? 1 : 0);
+    program_.set("u_ground", set_.ground);
+    if (set_.ground >= 0) {
+      program_.set("u_morph_min", set_.morph_box.lo);
+      program_.set("u_morph_max", set_.morph_box.hi);
+      program_.set("u_morph_centre", set_.environment_centre);
+    }
     frame.passes.drawReflectors(program_);
   }
 
@@ -71,16 +78,16 @@ class BillboardMethod final : public Method {
   }
 
  private:
-  // Diffuse objects without billboards are reflected through a cube map captured at the
-  // reflectors' centroid, with the distant environment; re-captured when the scene changes.
+  // Diffuse objects without billboards (and the ground, when it morphs into the environment)
+  // are reflected through a cube map captured at the reflectors' centroid E, with the distant
+  // environment; re-captured when the scene changes.
   void updateEnvironment(FrameContext& frame) {
-    if (set_.unbillboarded.empty()) return;
+    const std::vector<int> instances = set_.environmentInstances();
+    if (instances.empty()) return;
     GpuScene& gpu = frame.gpu;
     if (env_valid_ && env_version_ == gpu.version()) return;
     const Scene& scene = gpu.scene();
-    vec3 centre(0.0f);
-    const std::vector<int> reflectors = scene.reflectorInstances();
-    for (int r : reflectors) centre += gpu.instanceBounds(r).center() / float(reflectors.size());
+    const vec3 centre = set_.environment_centre;
     const int levels = frame.settings.mip ? gpu::Texture::fullMipLevels(env_size_) : 1;
     if (environment_.levels() != levels)
       environment_ = gpu::Texture::createCube(GL_RGBA16F, env_size_, levels);
@@ -89,7 +96,7 @@ class BillboardMethod final : public Method {
     cube_->capture(environment_, 0, centre, 1e-3f * radius, 100.0f * radius, [&](const View& v) {
       frame.passes.begin(v, frame.settings);
       frame.passes.drawBackground();
-      frame.passes.drawDiffuseInstances(set_.unbillboarded);
+      frame.passes.drawDiffuseInstances(instances);
     });
     if (levels > 1) environment_.generateMipmaps();
     env_valid_ = true;
@@ -128,6 +135,9 @@ MethodEntry billboardMethodEntry() {
       ParamSpec::choice("billboard-objects", {"all", "planar"}, "all",
                         "which diffuse objects get billboards: all, or planar ones only (the "
                         "others are reflected through a captured environment map)"),
+      ParamSpec::real("morph-height", 0.0, 1.0e6, 0.0,
+                      "height of the transition walls that morph the ground billboard into the "
+                      "environment (scene units; 0 = off)"),
       ParamSpec::integer("envmap-size", 8, 2048, 256,
                          "face size of each reflector's cube map, in texels")};
   entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {

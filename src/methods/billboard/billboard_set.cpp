@@ -77,6 +77,7 @@ BillboardSet placeBillboards(const Scene& scene, const std::vector<mat4>& matric
     reflector_radius[size_t(k)] = b.radius();
     reflectors_centroid += b.center() / float(r_count);
   }
+  set.environment_centre = reflectors_centroid;
 
   std::vector<int> planar, objects;
   for (int i = 0; i < int(scene.instances.size()); ++i) {
@@ -89,8 +90,10 @@ BillboardSet placeBillboards(const Scene& scene, const std::vector<mat4>& matric
       set.unbillboarded.push_back(i);
   }
 
-  // Planar objects: their own square, captured head-on from the reflectors' side.
+  // Planar objects: their own square, captured head-on from the reflectors' side. The ground
+  // (for the morph) is the largest horizontal one.
   std::vector<int> planar_index;
+  float ground_area = 0.0f;
   for (int i : planar) {
     const mat4& m = matrices[size_t(i)];
     vec3 n;
@@ -113,8 +116,21 @@ BillboardSet placeBillboards(const Scene& scene, const std::vector<mat4>& matric
     b.kind = BillboardSpec::Kind::kPlanar;
     b.object = i;
     b.layer = set.color_layers++;
+    const float area = glm::length(glm::cross(side1, side2));
+    if (options.morph_height > 0.0f && std::abs(n.y) > 0.99f && area > ground_area) {
+      ground_area = area;
+      set.ground = int(set.billboards.size());
+    }
     planar_index.push_back(int(set.billboards.size()));
     set.billboards.push_back(b);
+  }
+  if (set.ground >= 0) {
+    // The ground and its walls form one box; the ground leaves the lists.
+    const BillboardSpec& g = set.billboards[size_t(set.ground)];
+    const Bounds3 gb = worldBounds(scene, g.object, matrices[size_t(g.object)]);
+    set.morph_box.lo = vec3(gb.lo.x, gb.center().y, gb.lo.z);
+    set.morph_box.hi = vec3(gb.hi.x, gb.center().y + options.morph_height, gb.hi.z);
+    planar_index.erase(std::find(planar_index.begin(), planar_index.end(), set.ground));
   }
 
   set.ranges.resize(size_t(r_count));
@@ -150,6 +166,12 @@ BillboardSet placeBillboards(const Scene& scene, const std::vector<mat4>& matric
     range.range.w = int(set.entries.size()) - range.range.z;
   }
   return set;
+}
+
+std::vector<int> BillboardSet::environmentInstances() const {
+  std::vector<int> instances = unbillboarded;
+  if (ground >= 0) instances.push_back(billboards[size_t(ground)].object);
+  return instances;
 }
 
 std::vector<shading::BillboardData> BillboardSet::gpuData(const Scene& scene) const {

@@ -36,6 +36,7 @@ struct BillboardSpec {
 struct BillboardSetOptions {
   float fov_degrees = 10.0f;  // the capture camera's field of view (objects, reflectors)
   bool objects = true;        // billboards for non-planar diffuse objects too (else planar only)
+  float morph_height = 0.0f;  // > 0: transition walls of this height around the ground (§3.2)
 };
 
 struct BillboardSet {
@@ -46,6 +47,16 @@ struct BillboardSet {
   int color_layers = 0, reflective_layers = 0;
   // Diffuse instances with no billboard (they go into the captured environment).
   std::vector<int> unbillboarded;
+  // The billboard-to-environment morph (§3.2), when on: the ground's billboard (tested through
+  // the box it forms with its transition walls, not through the lists), the box, and the
+  // environment's centre E. The captured environment then shows the ground too.
+  int ground = -1;  // index into `billboards`, -1: no morph
+  Bounds3 morph_box;
+  vec3 environment_centre{0.0f};
+
+  // What the captured environment shows besides the distant environment (none: the method
+  // uses the scene's environment as it is).
+  std::vector<int> environmentInstances() const;
 
   std::vector<shading::BillboardData> gpuData(const Scene& scene) const;
 };
