@@ -161,6 +161,8 @@ int runBench(const BenchArgs& args) {
   const char* lp = std::getenv("LP_NUM_THREADS");
   j["lp_num_threads"] = lp ? nlohmann::json(lp) : nlohmann::json(nullptr);
   j["triangles"] = scene.triangleCount();
+  j["reflectors"] = scene.reflectorInstances().size();
+  j["params"] = args.params;  // method parameters given on the command line
   j["order"] = settings.order;
   j["frames"] = args.frames;
   j["warmup"] = args.warmup;
