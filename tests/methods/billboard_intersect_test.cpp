@@ -2,6 +2,7 @@
 // footprint of a hit, on the CPU: billboard.frag runs this very code over its storage buffers.
 #include <gtest/gtest.h>
 
+#include <random>
 #include <vector>
 
 #include "methods/billboard/billboard_shared.h"
@@ -33,12 +34,8 @@ using shading::BillboardData;
 
 // A 2 x 2 billboard in the plane z = `z`, centred on the z axis.
 BillboardData wallAt(float z, int layer) {
-  BillboardData b{};
-  b.corner = vec4(-1, -1, z, 0);
-  b.edge_u = vec4(2, 0, 0, 0);
-  b.edge_v = vec4(0, 2, 0, 0);
-  b.info = ivec4(MIRAGE_BILLBOARD_DIFFUSE, layer, -1, -1);
-  return b;
+  return shading::make_billboard(vec3(-1, -1, z), vec3(2, 0, 0), vec3(0, 2, 0),
+                                 ivec4(MIRAGE_BILLBOARD_DIFFUSE, layer, -1, -1));
 }
 
 class NearestBillboard : public ::testing::Test {
@@ -91,13 +88,43 @@ TEST_F(NearestBillboard, OnlyTheGivenEntriesAndTheGivenInterval) {
   EXPECT_FLOAT_EQ(t, 3.0f);
 }
 
+TEST(BillboardHit, AgreesWithTheGenericQuadIntersection) {
+  // billboard_hit precomputes the plane and the inverse edge lengths; shading::ray_quad (tested
+  // by hand in tests/shading) computes them per call. Random rays against random quads.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  auto rand3 = [&] { return vec3(u(rng), u(rng), u(rng)); };
+  int hits = 0;
+  for (int i = 0; i < 20000; ++i) {
+    vec3 eu = 2.0f * rand3(), helper = rand3();
+    vec3 ev = glm::cross(glm::normalize(eu), helper) * 1.5f;  // perpendicular to eu
+    vec3 corner = 2.0f * rand3();
+    if (glm::length(eu) < 0.05f || glm::length(ev) < 0.05f) continue;
+    BillboardData b = shading::make_billboard(corner, eu, ev, ivec4(0));
+    vec3 o = 3.0f * rand3(),
+         target = corner + (u(rng) * 0.6f + 0.5f) * eu + (u(rng) * 0.6f + 0.5f) * ev;
+    vec3 d = glm::normalize(target - o);
+    vec2 uv_a, uv_b;
+    float ta = shading::billboard_hit(b, o, d, 1e-4f, uv_a);
+    float tb = shading::ray_quad(o, d, corner, eu, ev, 1e-4f, uv_b);
+    ASSERT_EQ(ta >= 0.0f, tb >= 0.0f) << "ray " << i << ": t " << ta << " vs " << tb;
+    if (ta < 0.0f) continue;
+    ++hits;
+    // Float rounding, amplified at grazing incidence by 1 / |cos|.
+    const float grazing = 1.0f / std::max(std::abs(glm::dot(d, vec3(b.plane))), 1e-3f);
+    EXPECT_NEAR(ta, tb, 1e-5f * grazing * (1.0f + tb));
+    EXPECT_NEAR(uv_a.x, uv_b.x, 1e-5f * grazing);
+    EXPECT_NEAR(uv_a.y, uv_b.y, 1e-5f * grazing);
+  }
+  EXPECT_GT(hits, 5000);
+}
+
 TEST(BillboardFootprint, MatchesFiniteDifferences) {
   // A slanted billboard and a ray meeting it obliquely: the uv differential must equal the uv
   // change of a slightly moved ray, to first order.
-  BillboardData b{};
-  b.corner = vec4(-2, 0, -6, 0);
-  b.edge_u = vec4(4, 0, 0, 0);
-  b.edge_v = vec4(0, 3, 2, 0);
+  // edge_v is perpendicular to edge_u, as every billboard's.
+  BillboardData b = shading::make_billboard(vec3(-2, 0, -6), vec3(4, 0, 0), vec3(0, 3, 2),
+                                            ivec4(MIRAGE_BILLBOARD_DIFFUSE, 0, -1, -1));
   vec3 o(0.3f, 1.0f, 0.0f), d = glm::normalize(vec3(0.1f, 0.2f, -1.0f));
   vec3 d_origin(1e-3f, -2e-3f, 5e-4f), d_dir(2e-4f, 1e-4f, -3e-4f);
   vec2 uv0, uv1;

@@ -47,8 +47,8 @@ TEST(BillboardSet, CountsAndRanges) {
   BillboardSet set = placeBillboards(scene, matricesAt(scene, 0.0f), {});
   // 1 planar (floor), 1 object x 2 reflectors, 2 x 1 reflective.
   ASSERT_EQ(set.billboards.size(), 5u);
-  EXPECT_EQ(set.color_layers, 3);
-  EXPECT_EQ(set.reflective_layers, 2);
+  EXPECT_EQ(set.surface_layers, 5);
+  EXPECT_EQ(set.position_layers, 2);
   EXPECT_TRUE(set.unbillboarded.empty());
   ASSERT_EQ(set.ranges.size(), 2u);
   const std::vector<int> reflectors = scene.reflectorInstances();
@@ -72,7 +72,8 @@ TEST(BillboardSet, CountsAndRanges) {
   BillboardSetOptions planar;
   planar.objects = false;
   BillboardSet only = placeBillboards(scene, matricesAt(scene, 0.0f), planar);
-  EXPECT_EQ(only.color_layers, 1);
+  EXPECT_EQ(only.surface_layers, 3);
+  EXPECT_EQ(only.position_layers, 2);
   ASSERT_EQ(only.unbillboarded.size(), 1u);
   EXPECT_EQ(only.unbillboarded[0], instanceNamed(scene, "box"));
 }

@@ -34,13 +34,12 @@ BillboardCapture::Key BillboardCapture::keyOf(const GpuScene& gpu, const Billboa
 
 void BillboardCapture::allocate(const BillboardSet& set) {
   const int levels = gpu::Texture::fullMipLevels(size_);
-  const int colors = std::max(set.color_layers, 1), reflective = std::max(set.reflective_layers, 1);
-  if (colors_.layers() != colors)
-    colors_ = gpu::Texture::create2DArray(GL_RGBA16F, size_, size_, colors, levels);
-  if (normals_.layers() != reflective) {
-    normals_ = gpu::Texture::create2DArray(GL_RGBA16F, size_, size_, reflective, 1);
-    positions_ = gpu::Texture::create2DArray(GL_RGBA32F, size_, size_, reflective, 1);
-  }
+  const int surfaces = std::max(set.surface_layers, 1);
+  const int positions = std::max(set.position_layers, 1);
+  if (surfaces_.layers() != surfaces)
+    surfaces_ = gpu::Texture::create2DArray(GL_RGBA16F, size_, size_, surfaces, levels);
+  if (positions_.layers() != positions)
+    positions_ = gpu::Texture::create2DArray(GL_RGBA32F, size_, size_, positions, 1);
   if (keys_.size() != set.billboards.size()) {
     keys_.assign(set.billboards.size(), Key{});
     valid_.assign(set.billboards.size(), false);
@@ -51,7 +50,7 @@ int BillboardCapture::update(GpuScene& gpu, ScenePasses& passes, const Billboard
                              const FrameSettings& settings) {
   allocate(set);
   int captured = 0;
-  bool colors_changed = false;
+  bool surfaces_changed = false;
   for (size_t i = 0; i < set.billboards.size(); ++i) {
     const BillboardSpec& b = set.billboards[i];
     Key key = keyOf(gpu, b);
@@ -60,9 +59,9 @@ int BillboardCapture::update(GpuScene& gpu, ScenePasses& passes, const Billboard
     keys_[i] = key;
     valid_[i] = true;
     ++captured;
-    colors_changed |= b.kind != BillboardSpec::Kind::kReflective;
+    surfaces_changed = true;
   }
-  if (colors_changed) colors_.generateMipmaps();
+  if (surfaces_changed) surfaces_.generateMipmaps();
   captures_ += captured;
   return captured;
 }
@@ -71,12 +70,12 @@ void BillboardCapture::capture(GpuScene& gpu, ScenePasses& passes, const Billboa
                                const FrameSettings& settings) {
   const bool reflective = b.kind == BillboardSpec::Kind::kReflective;
   if (reflective) {
-    fbo_.attachColor(0, normals_, 0, b.layer);
-    fbo_.attachColor(2, positions_, 0, b.layer);
+    fbo_.attachColor(0, surfaces_, 0, b.layer);
+    fbo_.attachColor(2, positions_, 0, b.position_layer);
     const GLenum buffers[3] = {GL_COLOR_ATTACHMENT0, GL_NONE, GL_COLOR_ATTACHMENT2};
     glNamedFramebufferDrawBuffers(fbo_.id(), 3, buffers);
   } else {
-    fbo_.attachColor(0, colors_, 0, b.layer);
+    fbo_.attachColor(0, surfaces_, 0, b.layer);
     fbo_.setDrawBuffers(1);
   }
   fbo_.checkComplete("billboard capture");

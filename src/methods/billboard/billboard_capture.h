@@ -23,8 +23,8 @@ class BillboardCapture {
   int update(GpuScene& gpu, ScenePasses& passes, const BillboardSet& set,
              const FrameSettings& settings);
 
-  const gpu::Texture& colors() const { return colors_; }        // diffuse: RGBA16F, mip-mapped
-  const gpu::Texture& normals() const { return normals_; }      // reflective: normal + alpha
+  // Colour (diffuse) or normal (reflective) with coverage: RGBA16F, mip-mapped.
+  const gpu::Texture& surfaces() const { return surfaces_; }
   const gpu::Texture& positions() const { return positions_; }  // reflective: surface point
   long captures() const { return captures_; }
   int size() const { return size_; }
@@ -43,7 +43,7 @@ class BillboardCapture {
                const FrameSettings& settings);
 
   int size_;
-  gpu::Texture colors_, normals_, positions_, depth_;
+  gpu::Texture surfaces_, positions_, depth_;
   gpu::Framebuffer fbo_;
   gpu::Program diffuse_program_, reflector_program_;
   std::vector<Key> keys_;

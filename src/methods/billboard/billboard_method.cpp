@@ -51,19 +51,27 @@ class BillboardMethod final : public Method {
     billboards_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_BILLBOARDS);
     ranges_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_BILLBOARD_RANGES);
     entries_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_BILLBOARD_ENTRIES);
-    capture_.colors().bind(MIRAGE_UNIT_BILLBOARD_COLOR);
-    capture_.normals().bind(MIRAGE_UNIT_BILLBOARD_NORMAL);
+    capture_.surfaces().bind(MIRAGE_UNIT_BILLBOARD_SURFACE);
     capture_.positions().bind(MIRAGE_UNIT_BILLBOARD_POSITION);
     const bool captured_env = !set_.environmentInstances().empty();
     (captured_env ? environment_ : frame.gpu.environment()).bind(MIRAGE_UNIT_BILLBOARD_ENV);
-    program_.set("u_captured_env", captured_env ? 1 : 0);
     program_.set("u_ground", set_.ground);
     if (set_.ground >= 0) {
       program_.set("u_morph_min", set_.morph_box.lo);
       program_.set("u_morph_max", set_.morph_box.hi);
       program_.set("u_morph_centre", set_.environment_centre);
     }
+    // Depth first, then the expensive shader once per visible pixel (no overdraw).
+    glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    frame.passes.drawReflectors(base_program_);
+    glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_FALSE);
     frame.passes.drawReflectors(program_);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
   }
 
   std::map<std::string, double> stats() const override {

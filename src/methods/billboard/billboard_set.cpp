@@ -115,7 +115,7 @@ BillboardSet placeBillboards(const Scene& scene, const std::vector<mat4>& matric
                                       1.5f * distance, up);
     b.kind = BillboardSpec::Kind::kPlanar;
     b.object = i;
-    b.layer = set.color_layers++;
+    b.layer = set.surface_layers++;
     const float area = glm::length(glm::cross(side1, side2));
     if (options.morph_height > 0.0f && std::abs(n.y) > 0.99f && area > ground_area) {
       ground_area = area;
@@ -145,7 +145,7 @@ BillboardSet placeBillboards(const Scene& scene, const std::vector<mat4>& matric
       spec.kind = BillboardSpec::Kind::kObject;
       spec.object = i;
       spec.reflector = r;
-      spec.layer = set.color_layers++;
+      spec.layer = set.surface_layers++;
       set.entries.push_back(int(set.billboards.size()));
       set.billboards.push_back(spec);
     }
@@ -159,7 +159,8 @@ BillboardSet placeBillboards(const Scene& scene, const std::vector<mat4>& matric
       spec.object = reflectors[size_t(k)];
       spec.reflector = r;
       spec.represents = k;
-      spec.layer = set.reflective_layers++;
+      spec.layer = set.surface_layers++;
+      spec.position_layer = set.position_layers++;
       set.entries.push_back(int(set.billboards.size()));
       set.billboards.push_back(spec);
     }
@@ -178,14 +179,13 @@ std::vector<shading::BillboardData> BillboardSet::gpuData(const Scene& scene) co
   std::vector<shading::BillboardData> data;
   data.reserve(billboards.size());
   for (const BillboardSpec& b : billboards) {
-    shading::BillboardData d{};
-    d.corner = vec4(b.corner, 0.0f);
-    d.edge_u = vec4(b.edge_u, 0.0f);
-    d.edge_v = vec4(b.edge_v, 0.0f);
     const bool reflective = b.kind == BillboardSpec::Kind::kReflective;
-    d.info = ivec4(reflective ? MIRAGE_BILLBOARD_REFLECTIVE : MIRAGE_BILLBOARD_DIFFUSE, b.layer,
-                   reflective ? b.represents : -1,
-                   reflective ? scene.instances[size_t(b.object)].material : -1);
+    shading::BillboardData d = shading::make_billboard(
+        b.corner, b.edge_u, b.edge_v,
+        ivec4(reflective ? MIRAGE_BILLBOARD_REFLECTIVE : MIRAGE_BILLBOARD_DIFFUSE, b.layer,
+              reflective ? b.represents : -1,
+              reflective ? scene.instances[size_t(b.object)].material : -1));
+    d.corner.w = float(b.position_layer);
     data.push_back(d);
   }
   return data;

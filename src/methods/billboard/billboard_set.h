@@ -30,7 +30,8 @@ struct BillboardSpec {
   int represents = -1;  // reflective: the reflector (0-based) it stands for
   CameraDesc camera;    // captures its texture: square image, up = edge_v, right = edge_u
   vec3 corner{0.0f}, edge_u{0.0f}, edge_v{0.0f};
-  int layer = -1;  // in the colour (diffuse) or normal/position (reflective) arrays
+  int layer = -1;           // in the surface array: colour (diffuse) or normal (reflective)
+  int position_layer = -1;  // reflective: in the surface-point array
 };
 
 struct BillboardSetOptions {
@@ -44,7 +45,7 @@ struct BillboardSet {
   // Per reflector (0-based): the entries its rays test, into `entries`.
   std::vector<shading::BillboardRange> ranges;
   std::vector<int> entries;
-  int color_layers = 0, reflective_layers = 0;
+  int surface_layers = 0, position_layers = 0;
   // Diffuse instances with no billboard (they go into the captured environment).
   std::vector<int> unbillboarded;
   // The billboard-to-environment morph (§3.2), when on: the ground's billboard (tested through

@@ -8,17 +8,19 @@
 #include "shading/proxy.h"
 
 // BillboardData.info.x
-#define MIRAGE_BILLBOARD_DIFFUSE 0     // a textured quad with alpha (colour layer)
-#define MIRAGE_BILLBOARD_REFLECTIVE 1  // a reflector's quad with per-texel normal and position
+#define MIRAGE_BILLBOARD_DIFFUSE 0     // a textured quad: colour with coverage
+#define MIRAGE_BILLBOARD_REFLECTIVE 1  // a reflector's quad: normal with coverage, and position
 
 // Storage bindings and texture units of the billboard method.
-#define MIRAGE_BIND_BILLBOARDS 5          // SSBO BillboardData[]
-#define MIRAGE_BIND_BILLBOARD_RANGES 6    // SSBO BillboardRange[] (one per reflector)
-#define MIRAGE_BIND_BILLBOARD_ENTRIES 7   // SSBO int[]: billboard indices the ranges point into
-#define MIRAGE_UNIT_BILLBOARD_COLOR 4     // sampler2DArray: diffuse colour, premultiplied alpha
-#define MIRAGE_UNIT_BILLBOARD_NORMAL 5    // sampler2DArray: reflective normal (xyz) + alpha
-#define MIRAGE_UNIT_BILLBOARD_POSITION 6  // sampler2DArray: reflective surface position
-#define MIRAGE_UNIT_BILLBOARD_ENV 7  // samplerCube: the environment without billboarded objects
+#define MIRAGE_BIND_BILLBOARDS 5         // SSBO BillboardData[]
+#define MIRAGE_BIND_BILLBOARD_RANGES 6   // SSBO BillboardRange[] (one per reflector)
+#define MIRAGE_BIND_BILLBOARD_ENTRIES 7  // SSBO int[]: billboard indices the ranges point into
+// The surface array holds every billboard's coverage in alpha, so that the alpha test is one
+// lookup whatever the kind: diffuse layers hold the colour (premultiplied by coverage),
+// reflective layers the world-space normal.
+#define MIRAGE_UNIT_BILLBOARD_SURFACE 4   // sampler2DArray, RGBA16F, mip-mapped
+#define MIRAGE_UNIT_BILLBOARD_POSITION 6  // sampler2DArray: reflective surface points
+#define MIRAGE_UNIT_BILLBOARD_ENV 7       // samplerCube: the environment reflections miss into
 
 // Coverage at or above this counts as a hit (alpha test).
 #define MIRAGE_BILLBOARD_ALPHA_CUTOFF 0.5f
@@ -28,10 +30,11 @@ SHARED_BEGIN
 // One billboard: the quad corner + u * edge_u + v * edge_v, (u, v) in [0, 1]^2, with its texture
 // (u, v) = (s, t) on layer info.y of the colour (diffuse) or normal/position (reflective) arrays.
 struct BillboardData {
-  vec4 corner;  // xyz: the corner at (u, v) = (0, 0)
-  vec4 edge_u;  // xyz: the edge along u (perpendicular to edge_v)
-  vec4 edge_v;  // xyz: the edge along v
-  ivec4 info;   // x: MIRAGE_BILLBOARD_*; y: texture layer; z: the reflector a reflective
+  vec4 corner;  // xyz: the corner at (u, v) = (0, 0); w: reflective: surface-point layer
+  vec4 edge_u;  // xyz: the edge along u (perpendicular to edge_v); w: 1 / |edge_u|^2
+  vec4 edge_v;  // xyz: the edge along v; w: 1 / |edge_v|^2
+  vec4 plane;   // xyz: unit normal n = edge_u x edge_v / |...|; w: dot(n, corner)
+  ivec4 info;   // x: MIRAGE_BILLBOARD_*; y: surface layer; z: the reflector a reflective
                 // billboard stands for (0-based, -1 for diffuse); w: its material (-1)
 };
 
@@ -41,27 +44,46 @@ struct BillboardRange {
   ivec4 range;
 };
 
+// ray_quad (shading/proxy.h) with the plane and the inverse edge lengths precomputed: one
+// division per test. Returns t > t_min, or -1 on a miss (uv is then undefined).
 SHARED_FN float billboard_hit(BillboardData b, vec3 origin, vec3 dir, float t_min,
                               SHARED_OUT(vec2) uv) {
-  return ray_quad(origin, dir, vec3(b.corner), vec3(b.edge_u), vec3(b.edge_v), t_min, uv);
+  vec3 n = vec3(b.plane);
+  float denom = dot(dir, n);
+  float t = (b.plane.w - dot(origin, n)) / (abs(denom) > 1.0e-12f ? denom : 1.0e-12f);
+  vec3 local = origin + t * dir - vec3(b.corner);
+  uv = vec2(dot(local, vec3(b.edge_u)) * b.edge_u.w, dot(local, vec3(b.edge_v)) * b.edge_v.w);
+  bool inside = uv.x >= 0.0f && uv.x <= 1.0f && uv.y >= 0.0f && uv.y <= 1.0f;
+  return (t > t_min && inside && abs(denom) > 1.0e-12f) ? t : -1.0f;
+}
+
+// The data of the quad corner + u * edge_u + v * edge_v (u, v in [0, 1]).
+SHARED_FN BillboardData make_billboard(vec3 corner, vec3 edge_u, vec3 edge_v, ivec4 info) {
+  BillboardData b;
+  vec3 n = normalize(cross(edge_u, edge_v));
+  b.corner = vec4(corner, -1.0f);
+  b.edge_u = vec4(edge_u, 1.0f / dot(edge_u, edge_u));
+  b.edge_v = vec4(edge_v, 1.0f / dot(edge_v, edge_v));
+  b.plane = vec4(n, dot(n, corner));
+  b.info = info;
+  return b;
 }
 
 // How (u, v) at the hit moves when the ray's origin moves by d_origin and its direction by
 // d_dir (one pixel's ray differential): the footprint a mip-mapped lookup filters over.
 SHARED_FN vec2 billboard_uv_differential(BillboardData b, vec3 dir, float t, vec3 d_origin,
                                          vec3 d_dir) {
-  vec3 n = cross(vec3(b.edge_u), vec3(b.edge_v));
+  vec3 n = vec3(b.plane);
   vec3 dp = d_origin + t * d_dir;
   float dn = dot(dir, n);
   if (abs(dn) > 1.0e-20f) dp -= dir * (dot(dp, n) / dn);  // slide back onto the plane
-  return vec2(dot(dp, vec3(b.edge_u)) / dot(vec3(b.edge_u), vec3(b.edge_u)),
-              dot(dp, vec3(b.edge_v)) / dot(vec3(b.edge_v), vec3(b.edge_v)));
+  return vec2(dot(dp, vec3(b.edge_u)) * b.edge_u.w, dot(dp, vec3(b.edge_v)) * b.edge_v.w);
 }
 
 SHARED_END
 
 #ifndef MIRAGE_GLSL
-static_assert(sizeof(mirage::shading::BillboardData) == 4 * 16, "BillboardData layout");
+static_assert(sizeof(mirage::shading::BillboardData) == 5 * 16, "BillboardData layout");
 static_assert(sizeof(mirage::shading::BillboardRange) == 16, "BillboardRange layout");
 #endif
 
