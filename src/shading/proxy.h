@@ -70,6 +70,18 @@ SHARED_FN float ray_quad(vec3 origin, vec3 dir, vec3 corner, vec3 edge_u, vec3 e
   return t;
 }
 
+// Where the ray origin + t * dir (unit dir) leaves the sphere (centre, radius), t >= 0: the far
+// root of |o + t d - c|^2 = r^2. Returns -1 if the ray misses the sphere or it lies behind.
+SHARED_FN float ray_sphere_exit(vec3 origin, vec3 dir, vec3 centre, float radius) {
+  vec3 oc = origin - centre;
+  float b = dot(oc, dir);
+  float c = dot(oc, oc) - radius * radius;
+  float disc = b * b - c;
+  if (disc < 0.0f) return -1.0f;
+  float t = -b + sqrt(disc);
+  return t >= 0.0f ? t : -1.0f;
+}
+
 // The direction a parallax-corrected cube map captured at `centre` is looked up with: towards
 // the point where the ray leaves the proxy box, or the ray's own direction if it misses the box.
 // `t` receives the distance along the unit `dir` to that point (MISS_DISTANCE-free: -1 on a miss).
@@ -77,6 +89,15 @@ SHARED_FN vec3 box_parallax_direction(vec3 origin, vec3 dir, vec3 bmin, vec3 bma
                                       SHARED_OUT(float) t) {
   int face = -1;
   t = ray_box_exit(origin, dir, bmin, bmax, face);
+  if (t < 0.0f) return dir;
+  return origin + t * dir - centre;
+}
+
+// The same through a sphere proxy (Bjorke's, the special case the impostor paper starts from):
+// towards the point where the ray leaves the sphere (sphere_centre, radius).
+SHARED_FN vec3 sphere_parallax_direction(vec3 origin, vec3 dir, vec3 sphere_centre, float radius,
+                                         vec3 centre, SHARED_OUT(float) t) {
+  t = ray_sphere_exit(origin, dir, sphere_centre, radius);
   if (t < 0.0f) return dir;
   return origin + t * dir - centre;
 }

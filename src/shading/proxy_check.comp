@@ -18,6 +18,7 @@ struct ProxyResult {
   vec4 quad;      // x: ray_quad t; yz: uv
   vec4 parallax;  // xyz: box_parallax_direction; w: its t
   vec4 morph;     // xyz: morph_direction
+  vec4 sphere;    // x: ray_sphere_exit (centre c, radius morph.y)
 };
 
 layout(std430, binding = 0) readonly buffer Cases { ProxyCase cases[]; };
@@ -38,5 +39,6 @@ void main() {
   vec3 d = box_parallax_direction(k.origin.xyz, k.dir.xyz, k.a.xyz, k.b.xyz, k.c.xyz, tp);
   r.parallax = vec4(d, tp);
   r.morph = vec4(morph_direction(k.b.xyz, k.c.xyz, k.dir.xyz, k.morph.x, k.morph.y), 0.0f);
+  r.sphere = vec4(ray_sphere_exit(k.origin.xyz, k.dir.xyz, k.c.xyz, k.morph.y), 0, 0, 0);
   results[i] = r;
 }

@@ -16,7 +16,7 @@ struct ProxyCase {
   vec4 origin, dir, a, b, c, morph;
 };
 struct ProxyResult {
-  vec4 box, quad, parallax, morph;
+  vec4 box, quad, parallax, morph, sphere;
 };
 
 class ProxyGpuTest : public GlTest {};
@@ -69,6 +69,8 @@ TEST_F(ProxyGpuTest, GlslAgreesWithCpp) {
          near(g.parallax.z, d.z);
     vec3 m = shading::morph_direction(vec3(k.b), vec3(k.c), vec3(k.dir), k.morph.x, k.morph.y);
     ok = ok && near(g.morph.x, m.x) && near(g.morph.y, m.y) && near(g.morph.z, m.z);
+    float ts = shading::ray_sphere_exit(vec3(k.origin), vec3(k.dir), vec3(k.c), k.morph.y);
+    ok = ok && near(g.sphere.x, ts);
     if (!ok && ++mismatches <= 5)
       ADD_FAILURE() << "case " << i << ": GPU box (" << g.box.x << ", " << g.box.y << ") vs CPU ("
                     << t << ", " << face << "); quad " << g.quad.x << " vs " << tq;

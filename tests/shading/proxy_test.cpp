@@ -106,6 +106,24 @@ TEST(BoxParallax, LooksUpTheWallPointTheRayReaches) {
   expectVec(d, vec3(0, 1, 0));
 }
 
+TEST(RaySphereExit, FarRootInsideAndOutside) {
+  // Unit sphere at (0, 0, 0): from the centre every direction leaves at t = 1.
+  EXPECT_FLOAT_EQ(shading::ray_sphere_exit(vec3(0), vec3(0, 1, 0), vec3(0), 1.0f), 1.0f);
+  // From (0.5, 0, 0) along +x: leaves at x = 1.
+  EXPECT_FLOAT_EQ(shading::ray_sphere_exit(vec3(0.5f, 0, 0), vec3(1, 0, 0), vec3(0), 1.0f), 0.5f);
+  // From outside, through it: the far side (x = 1 from x = -3 is t = 4).
+  EXPECT_FLOAT_EQ(shading::ray_sphere_exit(vec3(-3, 0, 0), vec3(1, 0, 0), vec3(0), 1.0f), 4.0f);
+  // Missing it, or leaving it behind: -1.
+  EXPECT_EQ(shading::ray_sphere_exit(vec3(-3, 2, 0), vec3(1, 0, 0), vec3(0), 1.0f), -1.0f);
+  EXPECT_EQ(shading::ray_sphere_exit(vec3(3, 0, 0), vec3(1, 0, 0), vec3(0), 1.0f), -1.0f);
+  // Sphere parallax: from (0, 0.5, 0) along +x the wall point is (sqrt(0.75), 0.5, 0).
+  float t = 0.0f;
+  vec3 d = shading::sphere_parallax_direction(vec3(0, 0.5f, 0), vec3(1, 0, 0), vec3(0), 1.0f,
+                                              vec3(0), t);
+  EXPECT_NEAR(t, std::sqrt(0.75f), 1e-6f);
+  expectVec(d, vec3(std::sqrt(0.75f), 0.5f, 0.0f));
+}
+
 TEST(Morph, BlendsFromTheBillboardToTheEnvironment) {
   const vec3 hit(2, 0, 0), centre(0), dir(0, 3, 0);
   expectVec(morph_direction(hit, centre, dir, 0.0f, 1.0f), vec3(1, 0, 0));  // h = 0: r_a

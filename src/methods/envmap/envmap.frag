@@ -12,6 +12,8 @@ layout(binding = MIRAGE_UNIT_METHOD) uniform samplerCubeArray u_probes;
 
 uniform vec3 u_box_min;
 uniform vec3 u_box_max;
+uniform int u_proxy_sphere;  // 1: Bjorke's sphere proxy (the box's circumscribed sphere)
+uniform vec4 u_sphere;       // xyz: centre; w: radius
 // Probe centre per reflector (index reflector id - 1). Read for values only: no derivative is
 // taken of anything computed from it (see docs/architecture.md on helper invocations).
 layout(std430, binding = MIRAGE_BIND_METHOD_SSBO) readonly buffer ProbeCentres {
@@ -29,7 +31,10 @@ vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflecto
 #ifdef ENVMAP_BOX
   vec3 centre = probe_centre[reflector - 1].xyz;
   float t = -1.0f;
-  vec3 corrected = box_parallax_direction(position, direction, u_box_min, u_box_max, centre, t);
+  vec3 corrected =
+      u_proxy_sphere != 0
+          ? sphere_parallax_direction(position, direction, u_sphere.xyz, u_sphere.w, centre, t)
+          : box_parallax_direction(position, direction, u_box_min, u_box_max, centre, t);
   // Where the probe saw the sky along the corrected direction, the sky is at infinity and the
   // ray's own direction is exact; elsewhere the box point is the better guess.
   if (t >= 0.0f && textureLod(u_probes, vec4(corrected, layer), 0.0f).a < 0.5f * MISS_DISTANCE) {

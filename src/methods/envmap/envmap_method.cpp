@@ -24,6 +24,7 @@ class EnvmapMethod final : public Method {
         variant_(variant),
         infinite_(variant == Variant::kInfinite),
         size_(infinite_ ? 0 : setup.params.integer("envmap-size")),
+        sphere_proxy_(variant == Variant::kBox && setup.params.text("proxy") == "sphere"),
         program_(gpu::Program::graphics("render/shaders/scene.vert", "methods/envmap/envmap.frag",
                                         shaderDefines(variant))),
         base_program_(
@@ -129,12 +130,15 @@ class EnvmapMethod final : public Method {
     centres_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_METHOD_SSBO);
     program_.set("u_box_min", box_.lo);
     program_.set("u_box_max", box_.hi);
+    program_.set("u_proxy_sphere", sphere_proxy_ ? 1 : 0);
+    program_.set("u_sphere", vec4(box_.center(), box_.radius()));
   }
 
   const MethodInfo& info_;
   Variant variant_;
   bool infinite_;
   int size_;
+  bool sphere_proxy_;
   gpu::Program program_, base_program_;
   gpu::Texture probes_[2];
   gpu::Buffer centres_;  // envmap-box: vec4 probe centre per reflector
@@ -168,8 +172,12 @@ MethodEntry envmapBoxMethodEntry() {
   entry.info.description =
       "the reflection probes looked up through a box proxy of the room (parallax-corrected cube "
       "map)";
-  entry.info.params = {ParamSpec::integer("envmap-size", 8, 2048, 256,
-                                          "face size of each reflector's cube map, in texels")};
+  entry.info.params = {
+      ParamSpec::integer("envmap-size", 8, 2048, 256,
+                         "face size of each reflector's cube map, in texels"),
+      ParamSpec::choice("proxy", {"box", "sphere"}, "box",
+                        "envmap-box's proxy of the room: its box, or the box's circumscribed "
+                        "sphere (Bjorke)")};
   entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
     return std::make_unique<EnvmapMethod>(setup, Variant::kBox);
   };
