@@ -71,12 +71,7 @@ TEST_F(BaselineImages, TexturesAreSampledAlikeOnGpuAndCpu) {
   int mesh = addMesh(scene, procedural::quad(2.0f, 2.0f, 0.5f));
   int mat = addMaterial(scene, m);
   addInstance(scene, "quad", mesh, mat, {});
-  CameraDesc c;
-  c.position = {0.0f, 3.0f, 0.001f};
-  c.target = {0.0f, 0.0f, 0.0f};
-  c.fov_y_degrees = 30.0f;
-  scene.cameras.push_back(c);
-  scene.validate();
+  finishScene(scene, {0.0f, 3.0f, 0.001f}, {0.0f, 0.0f, 0.0f}, 30.0f);
   FrameSettings settings;
   settings.order = 0;
   Pair p = renderBoth(scene, "none", {160, 160}, settings);

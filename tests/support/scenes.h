@@ -6,6 +6,16 @@
 
 namespace mirage::test {
 
+// Adds a camera at `position` looking at `target`, then validates the scene.
+inline void finishScene(Scene& s, vec3 position, vec3 target, float fov_y_degrees) {
+  CameraDesc c;
+  c.position = position;
+  c.target = target;
+  c.fov_y_degrees = fov_y_degrees;
+  s.cameras.push_back(c);
+  s.validate();
+}
+
 // One mirror sphere under the procedural sky and nothing else: every reflected ray leaves the
 // scene, so a light probe at infinity is exact.
 inline Scene mirrorSphereInSky() {
@@ -14,12 +24,7 @@ inline Scene mirrorSphereInSky() {
   int sphere = addMesh(s, procedural::sphere(1.0f, 128, 64));
   int mirror = addMaterial(s, Material::mirror("mirror"));
   addInstance(s, "sphere", sphere, mirror, {});
-  CameraDesc c;
-  c.position = {0.0f, 0.8f, 3.2f};
-  c.target = {0.0f, 0.0f, 0.0f};
-  c.fov_y_degrees = 50.0f;
-  s.cameras.push_back(c);
-  s.validate();
+  finishScene(s, vec3{0.0f, 0.8f, 3.2f}, vec3{0.0f, 0.0f, 0.0f}, 50.0f);
   return s;
 }
 
@@ -35,12 +40,7 @@ inline Scene mirrorSphereInRoom() {
   int sphere = addMesh(s, procedural::sphere(0.7f, 128, 64));
   int mirror = addMaterial(s, Material::mirror("mirror"));
   addInstance(s, "sphere", sphere, mirror, placeAt({0.8f, 1.2f, -0.6f}));
-  CameraDesc c;
-  c.position = {-1.5f, 2.2f, 2.4f};
-  c.target = {0.8f, 1.2f, -0.6f};
-  c.fov_y_degrees = 50.0f;
-  s.cameras.push_back(c);
-  s.validate();
+  finishScene(s, vec3{-1.5f, 2.2f, 2.4f}, vec3{0.8f, 1.2f, -0.6f}, 50.0f);
   return s;
 }
 
@@ -59,12 +59,7 @@ inline Scene spheresOverFloor(bool floor_only = false) {
     addInstance(s, "sphere-b", sphere, mirror, placeAt({2.2f, 1.0f, -0.5f}));
     addBox(s, "box", {-1.8f, 0.5f, 0.6f}, vec3(0.5f), {0.85f, 0.2f, 0.15f}, 20.0f);
   }
-  CameraDesc c;
-  c.position = {0.5f, 2.6f, 5.0f};
-  c.target = {0.5f, 0.8f, 0.0f};
-  c.fov_y_degrees = 45.0f;
-  s.cameras.push_back(c);
-  s.validate();
+  finishScene(s, vec3{0.5f, 2.6f, 5.0f}, vec3{0.5f, 0.8f, 0.0f}, 45.0f);
   return s;
 }
 
