@@ -1,40 +1,15 @@
 // The command-line contract: bad input exits with 2 and one message naming the problem and the
 // allowed values; no OpenGL driver exits with 3; good input writes its files.
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "support/gl_test.h"
+#include "support/test_files.h"
 
 namespace mirage::test {
 namespace {
-
-struct Result {
-  int code = -1;
-  std::string output;  // stdout and stderr together
-};
-
-Result run(const std::string& args, const std::string& env = "") {
-  std::string command = env + " " + MIRAGE_BINARY + " " + args + " 2>&1";
-  Result r;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buffer{};
-  while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) r.output.append(buffer.data(), n);
-  int status = pclose(pipe);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
-std::filesystem::path tempDir(const std::string& name) {
-  auto dir = std::filesystem::temp_directory_path() / ("mirage-cli-" + name);
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
 
 struct BadInput {
   std::string args;
@@ -48,7 +23,7 @@ void PrintTo(const BadInput& b, std::ostream* os) {
 class CliBadInput : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(CliBadInput, ExitsWithTwoAndSaysWhy) {
-  Result r = run(GetParam().args);
+  CliResult r = runMirage(GetParam().args);
   EXPECT_EQ(r.code, 2) << r.output;
   EXPECT_NE(r.output.find(GetParam().expected), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("internal error"), std::string::npos) << r.output;
@@ -96,24 +71,24 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(Cli, HelpExitsZero) {
   for (const char* cmd :
        {"--help", "scenes --help", "render --help", "compare --help", "bench --help"}) {
-    Result r = run(cmd);
+    CliResult r = runMirage(cmd);
     EXPECT_EQ(r.code, 0) << cmd << "\n" << r.output;
     EXPECT_NE(r.output.find("Usage"), std::string::npos) << cmd;
   }
 }
 
 TEST(Cli, ScenesListsTheBuiltInScenesOnStdout) {
-  Result r = run("scenes 2>/dev/null");
+  CliResult r = runMirage("scenes 2>/dev/null");
   EXPECT_EQ(r.code, 0);
   for (const char* s : {"sphere-over-checker\n", "spheres9\n", "mirror-room\n", "two-mirrors\n"})
     EXPECT_NE(r.output.find(s), std::string::npos) << r.output;
 }
 
 TEST(Cli, NoOpenGLDriverExitsWithThree) {
-  auto dir = tempDir("nogl");
-  Result r =
-      run("render --scene sphere-over-checker --method envmap -o " + (dir / "x.png").string(),
-          "MIRAGE_NO_GL=1");
+  auto dir = testTempDir("cli");
+  CliResult r =
+      runMirage("render --scene sphere-over-checker --method envmap -o " + (dir / "x.png").string(),
+                "MIRAGE_NO_GL=1");
   EXPECT_EQ(r.code, 3) << r.output;
   EXPECT_NE(r.output.find("OpenGL 4.5"), std::string::npos) << r.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
@@ -122,11 +97,11 @@ TEST(Cli, NoOpenGLDriverExitsWithThree) {
 class CliWithGl : public GlTest {};
 
 TEST_F(CliWithGl, RenderWritesPngAndExr) {
-  auto dir = tempDir("render");
+  auto dir = testTempDir("cli");
   for (const char* ext : {".png", ".exr"}) {
     auto out = dir / (std::string("img") + ext);
-    Result r =
-        run("render --scene sphere-over-checker --method envmap --size 96x64 -o " + out.string());
+    CliResult r = runMirage("render --scene sphere-over-checker --method envmap --size 96x64 -o " +
+                            out.string());
     EXPECT_EQ(r.code, 0) << r.output;
     EXPECT_GT(std::filesystem::file_size(out), 100u);
   }
@@ -138,9 +113,9 @@ TEST_F(CliWithGl, RenderWritesPngAndExr) {
 }
 
 TEST_F(CliWithGl, CompareWritesTheReport) {
-  auto dir = tempDir("compare");
-  Result r =
-      run("compare --scene sphere-over-checker --methods all --size 120x86 -o " + dir.string());
+  auto dir = testTempDir("cli");
+  CliResult r = runMirage("compare --scene sphere-over-checker --methods all --size 120x86 -o " +
+                          dir.string());
   ASSERT_EQ(r.code, 0) << r.output;
   for (const char* f : {"index.html", "metrics.json", "raytrace.png", "envmap.png",
                         "envmap.err.png", "none.png", "envmap-infinite.png"})
@@ -148,12 +123,12 @@ TEST_F(CliWithGl, CompareWritesTheReport) {
 }
 
 TEST_F(CliWithGl, BenchWritesJson) {
-  auto dir = tempDir("bench");
+  auto dir = testTempDir("cli");
   auto json = dir / "b.json";
-  Result r =
-      run("bench --scene sphere-over-checker --methods none,envmap,raytrace --frames 3 "
-          "--warmup 1 --size 96x64 --json " +
-          json.string());
+  CliResult r = runMirage(
+      "bench --scene sphere-over-checker --methods none,envmap,raytrace --frames 3 "
+      "--warmup 1 --size 96x64 --json " +
+      json.string());
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_TRUE(std::filesystem::exists(json));
 }

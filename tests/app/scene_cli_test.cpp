@@ -1,8 +1,5 @@
 // Scene input on the command line: a malformed scene file exits with 2 and names the file and the
 // field; `mirage scenes` lists asset scenes on stdout once their files exist, on stderr before.
-#include <array>
-#include <cctype>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -10,41 +7,12 @@
 #include <gtest/gtest.h>
 
 #include "core/image.h"
+#include "support/test_files.h"
 
 namespace mirage::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct Result {
-  int code = -1;
-  std::string output;
-};
-
-// `redirect` decides which streams are captured ("2>&1": both, "2>/dev/null": stdout only).
-Result run(const std::string& args, const std::string& env = "",
-           const std::string& redirect = "2>&1") {
-  std::string command = env + " " + MIRAGE_BINARY + " " + args + " " + redirect;
-  Result r;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buffer{};
-  while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) r.output.append(buffer.data(), n);
-  int status = pclose(pipe);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
-// One folder per test: ctest runs the cases of a parameterised test in parallel.
-fs::path tempDir() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  std::string name = std::string(info->test_suite_name()) + "-" + info->name();
-  for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '-';
-  auto dir = fs::temp_directory_path() / ("mirage-scene-cli-" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 struct BadScene {
   std::string label;
@@ -59,11 +27,11 @@ void PrintTo(const BadScene& b, std::ostream* os) {
 class SceneCliBad : public ::testing::TestWithParam<BadScene> {};
 
 TEST_P(SceneCliBad, ExitsWithTwoNamingFileAndField) {
-  fs::path dir = tempDir();
+  fs::path dir = testTempDir("scene-cli");
   fs::path file = dir / "broken-scene.json";
   std::ofstream(file) << GetParam().text;
-  Result r =
-      run("render --scene " + file.string() + " --method raytrace -o " + (dir / "x.png").string());
+  CliResult r = runMirage("render --scene " + file.string() + " --method raytrace -o " +
+                          (dir / "x.png").string());
   EXPECT_EQ(r.code, 2) << r.output;
   EXPECT_NE(r.output.find(file.string()), std::string::npos) << r.output;
   EXPECT_NE(r.output.find(GetParam().field), std::string::npos) << r.output;
@@ -88,11 +56,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"empty", "", "empty"}));
 
 TEST(SceneCli, ScenesListsAssetScenesByAvailability) {
-  fs::path assets = tempDir() / "assets";
+  fs::path assets = testTempDir("scene-cli") / "assets";
   fs::create_directories(assets);
   std::string env = "MIRAGE_ASSET_DIR=" + assets.string();
-  Result out = run("scenes", env, "2>/dev/null");
-  Result err = run("scenes", env, "2>&1 >/dev/null");
+  CliResult out = runMirage("scenes", env, "2>/dev/null");
+  CliResult err = runMirage("scenes", env, "2>&1 >/dev/null");
   EXPECT_EQ(out.code, 0);
   EXPECT_NE(out.output.find("spheres9\n"), std::string::npos) << out.output;
   EXPECT_EQ(out.output.find("teapots4"), std::string::npos) << out.output;
@@ -110,9 +78,9 @@ TEST(SceneCli, ScenesListsAssetScenesByAvailability) {
        {"apartment", "bridge", "city", "dawn", "esplanade", "forest", "hall", "lab", "lobby",
         "night", "park", "sky", "studio", "sunrise", "sunset", "venice", "warehouse", "workshop"})
     writeExr((assets / "hdri" / (std::string(hdri) + ".exr")).string(), Image(8, 4, vec4(1.0f)));
-  out = run("scenes", env, "2>/dev/null");
+  out = runMirage("scenes", env, "2>/dev/null");
   EXPECT_NE(out.output.find("teapots4\n"), std::string::npos) << out.output;
-  Result missing = run("render --scene dragon --method raytrace -o x.png", env);
+  CliResult missing = runMirage("render --scene dragon --method raytrace -o x.png", env);
   EXPECT_EQ(missing.code, 2) << missing.output;
   EXPECT_NE(missing.output.find("scripts/fetch-assets"), std::string::npos) << missing.output;
 }

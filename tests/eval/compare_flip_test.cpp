@@ -1,8 +1,6 @@
 // `mirage compare` end to end: the FLIP maps and figures land in the report, and they rank the
 // methods the way the images do (the reference against itself is 0; no reflections at all is
 // worse on the reflectors than an environment-map approximation).
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -13,6 +11,7 @@
 
 #include "core/image.h"
 #include "support/gl_test.h"
+#include "support/test_files.h"
 
 namespace mirage::test {
 namespace {
@@ -20,18 +19,11 @@ namespace {
 class CompareFlip : public GlTest {};
 
 TEST_F(CompareFlip, ReportHasFlipMapsAndFigures) {
-  auto dir = std::filesystem::temp_directory_path() / "mirage-compare-flip";
-  std::filesystem::remove_all(dir);
-  std::string command =
-      std::string(MIRAGE_BINARY) +
-      " compare --scene sphere-over-checker --methods none,envmap --size 160x112 -o " +
-      dir.string() + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  std::string output;
-  std::array<char, 4096> buffer{};
-  while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) output.append(buffer.data(), n);
-  ASSERT_EQ(pclose(pipe), 0) << output;
+  auto dir = testTempDir("compare-flip");
+  CliResult r =
+      runMirage("compare --scene sphere-over-checker --methods none,envmap --size 160x112 -o " +
+                dir.string());
+  ASSERT_EQ(r.code, 0) << r.output;
 
   for (const char* name : {"raytrace", "none", "envmap"}) {
     auto flip = dir / (std::string(name) + ".flip.png");

@@ -10,33 +10,12 @@
 
 #include "scene/mesh_stage.h"
 #include "scene/scene_loader.h"
+#include "support/test_files.h"
 
 namespace mirage::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path tempDir() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  fs::path dir = fs::temp_directory_path() / (std::string("mirage-mesh-stage-") + info->name());
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-// An ASCII PLY box from `lo` to `hi`.
-std::string boxPly(vec3 lo, vec3 hi) {
-  std::string s =
-      "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\n"
-      "property float z\nelement face 12\nproperty list uchar int vertex_indices\n"
-      "end_header\n";
-  for (int i = 0; i < 8; ++i)
-    s += fmt::format("{} {} {}\n", i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
-  for (const char* f : {"0 2 1", "1 2 3", "4 5 6", "5 7 6", "0 1 4", "1 5 4", "2 6 3", "3 6 7",
-                        "0 4 2", "2 4 6", "1 3 5", "3 7 5"})
-    s += fmt::format("3 {}\n", f);
-  return s;
-}
 
 int findInstance(const Scene& s, const std::string& name) {
   for (size_t i = 0; i < s.instances.size(); ++i)
@@ -45,8 +24,8 @@ int findInstance(const Scene& s, const std::string& name) {
 }
 
 TEST(MeshStage, PlyModelIsMirrorFinishedOnACheckerGround) {
-  fs::path dir = tempDir();
-  std::ofstream(dir / "block.ply") << boxPly({1, 2, 3}, {5, 4, 4});  // extent 4 x 2 x 1
+  fs::path dir = testTempDir("mesh-stage");
+  std::ofstream(dir / "block.ply") << boxPlyText({1, 2, 3}, {5, 4, 4});  // extent 4 x 2 x 1
   Scene s = loadScene((dir / "block.ply").string());
   EXPECT_EQ(s.name, "block");
 
@@ -99,8 +78,8 @@ TEST(MeshStage, PlyModelIsMirrorFinishedOnACheckerGround) {
 }
 
 TEST(MeshStage, GzippedPlyIsNamedWithoutBothExtensions) {
-  fs::path dir = tempDir();
-  std::string text = boxPly({0, 0, 0}, {1, 3, 1});
+  fs::path dir = testTempDir("mesh-stage");
+  std::string text = boxPlyText({0, 0, 0}, {1, 3, 1});
   gzFile f = gzopen((dir / "tower.ply.gz").c_str(), "wb");
   ASSERT_NE(f, nullptr);
   gzwrite(f, text.data(), unsigned(text.size()));
@@ -113,7 +92,7 @@ TEST(MeshStage, GzippedPlyIsNamedWithoutBothExtensions) {
 }
 
 TEST(MeshStage, DiffuseModelGetsAMirrorSphereBesideIt) {
-  fs::path dir = tempDir();
+  fs::path dir = testTempDir("mesh-stage");
   std::ofstream(dir / "clay.mtl") << "newmtl clay\nKd 0.8 0.6 0.4\n";
   std::ofstream(dir / "clay.obj") << "mtllib clay.mtl\nusemtl clay\n"
                                      "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
@@ -129,7 +108,7 @@ TEST(MeshStage, DiffuseModelGetsAMirrorSphereBesideIt) {
 }
 
 TEST(MeshStage, BadFilesAreInputErrors) {
-  fs::path dir = tempDir();
+  fs::path dir = testTempDir("mesh-stage");
   try {
     makeMeshStage((dir / "missing.ply").string());
     FAIL();

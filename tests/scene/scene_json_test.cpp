@@ -12,41 +12,13 @@
 
 #include "core/image.h"
 #include "scene/scene_json.h"
+#include "support/test_files.h"
 
 namespace mirage::test {
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-fs::path tempDir() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  std::string name = std::string(info->test_suite_name()) + "-" + info->name();
-  for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '-';
-  fs::path dir = fs::temp_directory_path() / ("mirage-scene-json-" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-void writeText(const fs::path& path, const std::string& text) {
-  fs::create_directories(path.parent_path());
-  std::ofstream(path, std::ios::binary) << text;
-}
-
-// An ASCII PLY of an axis-aligned box from `lo` to `hi` (8 vertices, 12 triangles).
-void writeBoxPly(const fs::path& path, vec3 lo, vec3 hi) {
-  std::string s =
-      "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\n"
-      "property float z\nelement face 12\nproperty list uchar int vertex_indices\n"
-      "end_header\n";
-  for (int i = 0; i < 8; ++i)
-    s += fmt::format("{} {} {}\n", i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
-  for (const char* f : {"0 2 1", "1 2 3", "4 5 6", "5 7 6", "0 1 4", "1 5 4", "2 6 3", "3 6 7",
-                        "0 4 2", "2 4 6", "1 3 5", "3 7 5"})
-    s += fmt::format("3 {}\n", f);
-  writeText(path, s);
-}
 
 // Restores MIRAGE_ASSET_DIR when a test that points it elsewhere ends.
 class AssetDirGuard {
@@ -108,13 +80,13 @@ fs::path writeScene(const fs::path& dir, const json& scene,
   fs::create_directories(dir / "tex");
   writePng((dir / "tex/wood.png").string(), Image(2, 2, vec4(0.5f, 0.25f, 0.1f, 1.0f)));
   writePng((dir / "tex/bumps.png").string(), Image(2, 2, vec4(0.5f, 0.5f, 1.0f, 1.0f)));
-  writeBoxPly(dir / "box.ply", {1, 2, 3}, {5, 4, 4});
+  writeText(dir / "box.ply", boxPlyText({1, 2, 3}, {5, 4, 4}));
   writeText(dir / name, scene.dump(2));
   return dir / name;
 }
 
 TEST(SceneJson, FullSceneParsesIntoTheExpectedScene) {
-  fs::path dir = tempDir();
+  fs::path dir = testTempDir("scene-json");
   fs::path file = writeScene(dir, fullScene());
   Scene s = loadSceneJson(file.string());
   EXPECT_EQ(s.name, "full");
@@ -182,7 +154,7 @@ TEST(SceneJson, FullSceneParsesIntoTheExpectedScene) {
 }
 
 TEST(SceneJson, MinimalSceneGetsDefaultsAndACamera) {
-  fs::path dir = tempDir();
+  fs::path dir = testTempDir("scene-json");
   writeText(dir / "tiny.json", R"({"materials": [{"name": "m", "type": "diffuse"}],
     "meshes": [{"name": "b", "procedural": "box"}],
     "instances": [{"mesh": "b", "material": "m"}]})");
@@ -207,7 +179,7 @@ void PrintTo(const BadCase& c, std::ostream* os) {
 class SceneJsonBad : public ::testing::TestWithParam<BadCase> {};
 
 TEST_P(SceneJsonBad, IsAnInputErrorNamingFileAndField) {
-  fs::path dir = tempDir();
+  fs::path dir = testTempDir("scene-json");
   AssetDirGuard assets(dir / "assets");
   json scene = fullScene();
   GetParam().edit(scene);
@@ -388,7 +360,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 // Input that is not a scene object at all.
 void expectFileError(const std::string& text, const std::string& piece) {
-  fs::path dir = tempDir();
+  fs::path dir = testTempDir("scene-json");
   writeText(dir / "raw.json", text);
   try {
     loadSceneJson((dir / "raw.json").string());
@@ -431,7 +403,7 @@ TEST(SceneJson, DeepNestingIsRejectedWhileParsing) {
 }
 
 TEST(SceneJson, MissingSceneFile) {
-  fs::path dir = tempDir();
+  fs::path dir = testTempDir("scene-json");
   EXPECT_THROW(loadSceneJson((dir / "none.json").string()), InputError);
   EXPECT_THROW(loadSceneJson(dir.string()), InputError);
 }

@@ -7,41 +7,21 @@
 #include <gtest/gtest.h>
 
 #include "scene/scene_json.h"
+#include "support/test_files.h"
 
 namespace mirage::test {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path tempDir() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  fs::path dir = fs::temp_directory_path() / (std::string("mirage-scene-json-tf-") + info->name());
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-// An ASCII PLY of an axis-aligned box from `lo` to `hi` (8 vertices, 12 triangles).
-void writeBoxPly(const fs::path& path, vec3 lo, vec3 hi) {
-  std::string s =
-      "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\n"
-      "property float z\nelement face 12\nproperty list uchar int vertex_indices\nend_header\n";
-  for (int i = 0; i < 8; ++i)
-    s += fmt::format("{} {} {}\n", i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
-  for (const char* f : {"0 2 1", "1 2 3", "4 5 6", "5 7 6", "0 1 4", "1 5 4", "2 6 3", "3 6 7",
-                        "0 4 2", "2 4 6", "1 3 5", "3 7 5"})
-    s += fmt::format("3 {}\n", f);
-  std::ofstream(path) << s;
-}
-
 Scene parseIn(const fs::path& dir, const std::string& text) {
-  writeBoxPly(dir / "box.ply", {1, 2, 3}, {5, 4, 4});  // extent 4 x 2 x 1
+  writeText(dir / "box.ply", boxPlyText({1, 2, 3}, {5, 4, 4}));  // extent 4 x 2 x 1
   std::ofstream(dir / "s.json") << text;
   return loadSceneJson((dir / "s.json").string());
 }
 
 TEST(SceneJson, AnimationKeysGiveTheExpectedTransforms) {
-  Scene s = parseIn(tempDir(), R"({
+  Scene s = parseIn(testTempDir("scene-json-tf"), R"({
     "materials": [{"name": "m", "type": "diffuse"}],
     "meshes": [{"name": "b", "procedural": "box"}],
     "instances": [
@@ -67,7 +47,7 @@ TEST(SceneJson, AnimationKeysGiveTheExpectedTransforms) {
 }
 
 TEST(SceneJson, EulerAnglesApplyXThenYThenZ) {
-  Scene s = parseIn(tempDir(), R"({
+  Scene s = parseIn(testTempDir("scene-json-tf"), R"({
     "materials": [{"name": "m", "type": "diffuse"}],
     "meshes": [{"name": "b", "procedural": "box"}],
     "instances": [{"mesh": "b", "material": "m", "rotate": [90, 90, 0]},
@@ -81,7 +61,7 @@ TEST(SceneJson, EulerAnglesApplyXThenYThenZ) {
 }
 
 TEST(SceneJson, FitScalesUniformlyCentresAndGrounds) {
-  Scene s = parseIn(tempDir(), R"({
+  Scene s = parseIn(testTempDir("scene-json-tf"), R"({
     "materials": [{"name": "m", "type": "diffuse"}],
     "meshes": [{"name": "grounded", "file": "box.ply", "fit": {"size": 2, "ground": true}},
                {"name": "centred", "file": "box.ply", "fit": {}},
@@ -96,7 +76,7 @@ TEST(SceneJson, FitScalesUniformlyCentresAndGrounds) {
 }
 
 TEST(SceneJson, ModelInstancesBringTheFilesMeshes) {
-  Scene s = parseIn(tempDir(), R"({
+  Scene s = parseIn(testTempDir("scene-json-tf"), R"({
     "materials": [{"name": "shiny", "type": "reflector"}],
     "meshes": [{"name": "block", "file": "box.ply", "fit": {"size": 1, "ground": true}}],
     "instances": [{"name": "plain", "model": "block", "translate": [0, 0, 3]},

@@ -13,31 +13,12 @@
 #include "core/image.h"
 #include "scene/scene_json.h"
 #include "scene/scene_loader.h"
+#include "support/test_files.h"
 
 namespace mirage::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path tempDir() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  fs::path dir = fs::temp_directory_path() / (std::string("mirage-scene-loader-") + info->name());
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string boxPly() {
-  std::string s =
-      "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\n"
-      "property float z\nelement face 12\nproperty list uchar int vertex_indices\n"
-      "end_header\n";
-  for (int i = 0; i < 8; ++i) s += fmt::format("{} {} {}\n", i & 1, (i >> 1) & 1, (i >> 2) & 1);
-  for (const char* f : {"0 2 1", "1 2 3", "4 5 6", "5 7 6", "0 1 4", "1 5 4", "2 6 3", "3 6 7",
-                        "0 4 2", "2 4 6", "1 3 5", "3 7 5"})
-    s += fmt::format("3 {}\n", f);
-  return s;
-}
 
 // A stand-in for an asset file, chosen by its extension.
 void writeStandIn(const fs::path& path) {
@@ -48,11 +29,11 @@ void writeStandIn(const fs::path& path) {
   } else if (name.ends_with(".ply.gz")) {
     gzFile f = gzopen(path.c_str(), "wb");
     ASSERT_NE(f, nullptr);
-    std::string text = boxPly();
+    std::string text = boxPlyText();
     gzwrite(f, text.data(), unsigned(text.size()));
     gzclose(f);
   } else if (name.ends_with(".ply")) {
-    std::ofstream(path) << boxPly();
+    std::ofstream(path) << boxPlyText();
   } else {
     FAIL() << "no stand-in for " << path;
   }
@@ -61,7 +42,7 @@ void writeStandIn(const fs::path& path) {
 // Points MIRAGE_ASSET_DIR at a fresh directory for one test.
 class AssetDir {
  public:
-  AssetDir() : dir_(tempDir() / "assets") {
+  AssetDir() : dir_(testTempDir("scene-loader") / "assets") {
     fs::create_directories(dir_);
     setenv("MIRAGE_ASSET_DIR", dir_.c_str(), 1);
   }
@@ -163,14 +144,14 @@ TEST(SceneLoader, OneMissingFileMakesOneSceneUnavailable) {
 }
 
 TEST(SceneLoader, LoadsJsonFilesAndMeshFiles) {
-  fs::path dir = tempDir();
+  fs::path dir = testTempDir("scene-loader");
   std::ofstream(dir / "one.json") << R"({"materials": [{"name": "m", "type": "reflector"}],
     "meshes": [{"name": "s", "procedural": "sphere"}], "instances": [{"mesh": "s", "material": "m"}]})";
   Scene json = loadScene((dir / "one.json").string());
   EXPECT_EQ(json.name, "one");
   EXPECT_EQ(json.reflectorInstances().size(), 1u);
 
-  std::ofstream(dir / "cube.ply") << boxPly();
+  std::ofstream(dir / "cube.ply") << boxPlyText();
   Scene stage = loadScene((dir / "cube.ply").string());
   EXPECT_EQ(stage.name, "cube");
   EXPECT_EQ(stage.source, (dir / "cube.ply").string());
@@ -189,7 +170,7 @@ TEST(SceneLoader, ErrorsNameTheSpec) {
     EXPECT_NE(msg.find("spheres9"), std::string::npos) << msg;
     EXPECT_NE(msg.find("teapots4"), std::string::npos) << msg;
   }
-  fs::path dir = tempDir();
+  fs::path dir = testTempDir("scene-loader");
   EXPECT_THROW(loadScene((dir / "absent.json").string()), InputError);
   EXPECT_THROW(loadScene((dir / "absent.ply").string()), InputError);
   std::ofstream(dir / "one.json") << R"({"instances": []})";
