@@ -9,17 +9,6 @@
 namespace mirage::test {
 namespace {
 
-std::vector<mat4> matricesAt(const Scene& scene, float time) {
-  std::vector<mat4> m;
-  for (const Instance& inst : scene.instances) m.push_back(inst.matrixAt(time));
-  return m;
-}
-
-Bounds3 worldBounds(const Scene& scene, int instance) {
-  const Instance& inst = scene.instances[size_t(instance)];
-  return scene.meshes[size_t(inst.mesh)].bounds().transformed(inst.matrixAt(0.0f));
-}
-
 int instanceNamed(const Scene& scene, const std::string& name) {
   for (size_t i = 0; i < scene.instances.size(); ++i)
     if (scene.instances[i].name == name) return int(i);
@@ -44,7 +33,7 @@ TEST(BillboardSet, PlanarDetection) {
 
 TEST(BillboardSet, CountsAndRanges) {
   Scene scene = spheresOverFloor();
-  BillboardSet set = placeBillboards(scene, matricesAt(scene, 0.0f), {});
+  BillboardSet set = placeBillboards(scene, 0.0f, {});
   // 1 planar (floor), 1 object x 2 reflectors, 2 x 1 reflective.
   ASSERT_EQ(set.billboards.size(), 5u);
   EXPECT_EQ(set.surface_layers, 5);
@@ -71,7 +60,7 @@ TEST(BillboardSet, CountsAndRanges) {
   // Planar only: the box goes to the environment instead.
   BillboardSetOptions planar;
   planar.objects = false;
-  BillboardSet only = placeBillboards(scene, matricesAt(scene, 0.0f), planar);
+  BillboardSet only = placeBillboards(scene, 0.0f, planar);
   EXPECT_EQ(only.surface_layers, 3);
   EXPECT_EQ(only.position_layers, 2);
   ASSERT_EQ(only.unbillboarded.size(), 1u);
@@ -80,7 +69,7 @@ TEST(BillboardSet, CountsAndRanges) {
 
 TEST(BillboardSet, PlanarBillboardLiesInTheObjectsPlaneAndCoversIt) {
   Scene scene = spheresOverFloor();
-  BillboardSet set = placeBillboards(scene, matricesAt(scene, 0.0f), {});
+  BillboardSet set = placeBillboards(scene, 0.0f, {});
   const BillboardSpec& floor = set.billboards[0];
   ASSERT_EQ(floor.kind, BillboardSpec::Kind::kPlanar);
   EXPECT_NEAR(floor.corner.y, 0.0f, 1e-5f);
@@ -102,13 +91,13 @@ TEST(BillboardSet, PlanarBillboardLiesInTheObjectsPlaneAndCoversIt) {
 
 TEST(BillboardSet, ObjectBillboardsFaceTheirReflector) {
   Scene scene = spheresOverFloor();
-  BillboardSet set = placeBillboards(scene, matricesAt(scene, 0.0f), {});
+  BillboardSet set = placeBillboards(scene, 0.0f, {});
   const std::vector<int> reflectors = scene.reflectorInstances();
   int seen = 0;
   for (const BillboardSpec& b : set.billboards) {
     if (b.kind == BillboardSpec::Kind::kPlanar) continue;
-    const Bounds3 object = worldBounds(scene, b.object);
-    const vec3 viewer = worldBounds(scene, reflectors[size_t(b.reflector)]).center();
+    const Bounds3 object = scene.instanceBounds(b.object);
+    const vec3 viewer = scene.instanceBounds(reflectors[size_t(b.reflector)]).center();
     // Through the object's centre, perpendicular to the line to the reflector's centre.
     const vec3 c = quadCentre(b);
     EXPECT_NEAR(glm::length(c - object.center()), 0.0f, 1e-4f);
@@ -130,7 +119,7 @@ TEST(BillboardSet, CaptureCameraMapsTexelsOntoTheQuad) {
   // Texel (s, t) of the captured image (t from the bottom row, GL's order) must show the quad
   // point corner + s * edge_u + t * edge_v: View::project gives top-left pixel coordinates.
   Scene scene = spheresOverFloor();
-  BillboardSet set = placeBillboards(scene, matricesAt(scene, 0.0f), {});
+  BillboardSet set = placeBillboards(scene, 0.0f, {});
   const int n = 256;
   for (const BillboardSpec& b : set.billboards) {
     View view(b.camera, {n, n});

@@ -83,9 +83,10 @@ vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflecto
       // The box's floor is the ground's plane: the quad's coordinates of the same point.
       hit = u_ground;
       t = t_box;
-      vec3 local = origin + t_box * dir - billboards[hit].corner.xyz;
-      vec3 eu = billboards[hit].edge_u.xyz, ev = billboards[hit].edge_v.xyz;
-      uv = clamp(vec2(dot(local, eu) / dot(eu, eu), dot(local, ev) / dot(ev, ev)), 0.0f, 1.0f);
+      BillboardData g = billboards[hit];
+      vec3 local = origin + t_box * dir - g.corner.xyz;
+      uv = clamp(vec2(dot(local, g.edge_u.xyz) * g.edge_u.w, dot(local, g.edge_v.xyz) * g.edge_v.w),
+                 0.0f, 1.0f);
       box = false;
     }
     float distance = box ? t_box : (hit >= 0 ? t : MISS_DISTANCE);

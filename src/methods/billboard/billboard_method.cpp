@@ -29,16 +29,23 @@ class BillboardMethod final : public Method {
 
   void update(FrameContext& frame) override {
     GpuScene& gpu = frame.gpu;
+    // Placements and captures depend on the scene's state only (its version) and on the mip
+    // setting; a frame that changes neither (a camera move) has nothing to redo.
+    if (updated_ && updated_version_ == gpu.version() && updated_mip_ == frame.settings.mip) {
+      last_captures_ = 0;
+      return;
+    }
     const Scene& scene = gpu.scene();
-    std::vector<mat4> matrices(scene.instances.size());
-    for (size_t i = 0; i < matrices.size(); ++i) matrices[i] = gpu.instanceMatrix(int(i));
-    set_ = placeBillboards(scene, matrices, options_);
+    set_ = placeBillboards(scene, gpu.time(), options_);
     std::vector<shading::BillboardData> data = set_.gpuData(scene);
     billboards_.upload(std::span<const shading::BillboardData>(data));
     ranges_.upload(std::span<const shading::BillboardRange>(set_.ranges));
     entries_.upload(std::span<const int>(set_.entries));
     last_captures_ = capture_.update(gpu, frame.passes, set_, frame.settings);
     updateEnvironment(frame);
+    updated_ = true;
+    updated_version_ = gpu.version();
+    updated_mip_ = frame.settings.mip;
   }
 
   void render(FrameContext& frame) override {
@@ -125,6 +132,8 @@ class BillboardMethod final : public Method {
   uint64_t env_version_ = 0;
   long env_captures_ = 0;
   int last_captures_ = 0;
+  bool updated_ = false, updated_mip_ = false;
+  uint64_t updated_version_ = 0;
 };
 
 }  // namespace

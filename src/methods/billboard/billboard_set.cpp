@@ -7,10 +7,6 @@ namespace mirage {
 
 namespace {
 
-Bounds3 worldBounds(const Scene& scene, int instance, const mat4& model) {
-  return scene.meshes[size_t(scene.instances[size_t(instance)].mesh)].bounds().transformed(model);
-}
-
 // A square billboard through `centre`, facing `towards` (unit, from the centre to the capture
 // camera), captured by a camera of `fov` degrees at `distance`, with the camera's up near
 // `up_hint`. Its half-size is the camera's half-width at the centre.
@@ -63,8 +59,7 @@ bool isPlanarInstance(const Scene& scene, int instance, const mat4& model, vec3*
   return true;
 }
 
-BillboardSet placeBillboards(const Scene& scene, const std::vector<mat4>& matrices,
-                             const BillboardSetOptions& options) {
+BillboardSet placeBillboards(const Scene& scene, float time, const BillboardSetOptions& options) {
   BillboardSet set;
   const std::vector<int> reflectors = scene.reflectorInstances();
   const int r_count = int(reflectors.size());
@@ -72,7 +67,7 @@ BillboardSet placeBillboards(const Scene& scene, const std::vector<mat4>& matric
   std::vector<float> reflector_radius(size_t(r_count), 0.0f);
   vec3 reflectors_centroid(0.0f);
   for (int k = 0; k < r_count; ++k) {
-    Bounds3 b = worldBounds(scene, reflectors[size_t(k)], matrices[size_t(reflectors[size_t(k)])]);
+    Bounds3 b = scene.instanceBounds(reflectors[size_t(k)], time);
     reflector_centre[size_t(k)] = b.center();
     reflector_radius[size_t(k)] = b.radius();
     reflectors_centroid += b.center() / float(r_count);
@@ -82,7 +77,7 @@ BillboardSet placeBillboards(const Scene& scene, const std::vector<mat4>& matric
   std::vector<int> planar, objects;
   for (int i = 0; i < int(scene.instances.size()); ++i) {
     if (scene.isReflector(i)) continue;
-    if (isPlanarInstance(scene, i, matrices[size_t(i)]))
+    if (isPlanarInstance(scene, i, scene.instances[size_t(i)].matrixAt(time)))
       planar.push_back(i);
     else if (options.objects)
       objects.push_back(i);
@@ -95,7 +90,7 @@ BillboardSet placeBillboards(const Scene& scene, const std::vector<mat4>& matric
   std::vector<int> planar_index;
   float ground_area = 0.0f;
   for (int i : planar) {
-    const mat4& m = matrices[size_t(i)];
+    const mat4 m = scene.instances[size_t(i)].matrixAt(time);
     vec3 n;
     isPlanarInstance(scene, i, m, &n);
     const Bounds3 local = scene.meshes[size_t(scene.instances[size_t(i)].mesh)].bounds();
@@ -127,7 +122,7 @@ BillboardSet placeBillboards(const Scene& scene, const std::vector<mat4>& matric
   if (set.ground >= 0) {
     // The ground and its walls form one box; the ground leaves the lists.
     const BillboardSpec& g = set.billboards[size_t(set.ground)];
-    const Bounds3 gb = worldBounds(scene, g.object, matrices[size_t(g.object)]);
+    const Bounds3 gb = scene.instanceBounds(g.object, time);
     set.morph_box.lo = vec3(gb.lo.x, gb.center().y, gb.lo.z);
     set.morph_box.hi = vec3(gb.hi.x, gb.center().y + options.morph_height, gb.hi.z);
     planar_index.erase(std::find(planar_index.begin(), planar_index.end(), set.ground));
@@ -140,7 +135,7 @@ BillboardSet placeBillboards(const Scene& scene, const std::vector<mat4>& matric
     range.range.x = int(set.entries.size());
     for (int index : planar_index) set.entries.push_back(index);
     for (int i : objects) {
-      const Bounds3 b = worldBounds(scene, i, matrices[size_t(i)]);
+      const Bounds3 b = scene.instanceBounds(i, time);
       BillboardSpec spec = volumeBillboard(b.center(), b.radius(), viewer, options.fov_degrees);
       spec.kind = BillboardSpec::Kind::kObject;
       spec.object = i;

@@ -66,8 +66,7 @@ struct BillboardSet {
 // `normal` receives its world-space plane normal.
 bool isPlanarInstance(const Scene& scene, int instance, const mat4& model, vec3* normal = nullptr);
 
-// The billboards of `scene` with instances placed by `matrices` (one per instance).
-BillboardSet placeBillboards(const Scene& scene, const std::vector<mat4>& matrices,
-                             const BillboardSetOptions& options);
+// The billboards of `scene` with its instances placed at `time`.
+BillboardSet placeBillboards(const Scene& scene, float time, const BillboardSetOptions& options);
 
 }  // namespace mirage
