@@ -50,6 +50,47 @@ TEST_F(BillboardImages, ApproximatesSpheres9BetterThanProbes) {
   EXPECT_GT(reflectorPsnr(billboard), reflectorPsnr(probe) + 2.0);
 }
 
+// Which pixels change between two frames of the same view (any channel by more than 1e-5).
+std::vector<bool> changedPixels(const Image& a, const Image& b) {
+  std::vector<bool> changed(a.pixelCount());
+  for (size_t i = 0; i < changed.size(); ++i)
+    changed[i] =
+        glm::any(glm::greaterThan(glm::abs(vec3(a.data()[i]) - vec3(b.data()[i])), vec3(1e-5f)));
+  return changed;
+}
+
+TEST_F(BillboardImages, OrderKChangesOnlyWhereKthOrderPathsExist) {
+  // Two facing mirrors and a sphere: raising the order from K - 1 to K must change the
+  // billboard image where the ray tracer's image changes (paths with a K-th reflection) and
+  // nowhere else, up to the billboards' approximation at the edges of what they stand for.
+  Scene scene = makeBuiltinScene("two-mirrors");
+  const ivec2 size{240, 160};
+  for (int k : {2, 3}) {
+    FrameSettings lower, higher;
+    lower.order = k - 1;
+    higher.order = k;
+    RenderPair a = renderWithTruth(scene, "billboard", size, lower);
+    RenderPair b = renderWithTruth(scene, "billboard", size, higher);
+    std::vector<bool> truth = changedPixels(a.cpu, b.cpu);
+    std::vector<bool> ours = changedPixels(a.gpu, b.gpu);
+    size_t truth_changed = 0, both = 0, ours_only = 0, unchanged = 0;
+    for (size_t i = 0; i < truth.size(); ++i) {
+      truth_changed += truth[i];
+      both += truth[i] && ours[i];
+      ours_only += !truth[i] && ours[i];
+      unchanged += !truth[i];
+    }
+    ASSERT_GT(truth_changed, 500u) << "the scene must have order-" << k << " paths";
+    // Measured: recall 0.987 / 0.982 and spurious 0.0008 / 0.0014 at orders 2 / 3.
+    const double recall = double(both) / double(truth_changed);
+    const double spurious = double(ours_only) / double(unchanged);
+    std::printf("order %d: recall %.4f, spurious %.4f (%zu truth-changed pixels)\n", k, recall,
+                spurious, truth_changed);
+    EXPECT_GT(recall, 0.9) << "order " << k;
+    EXPECT_LT(spurious, 0.01) << "order " << k;
+  }
+}
+
 TEST_F(BillboardImages, RecapturesOnlyWhatChanged) {
   // Floor (planar, shared), a box (one billboard per reflector), two mirror spheres (one
   // reflective billboard each for the other): 1 + 2 + 2 = 5 billboards.

@@ -45,6 +45,8 @@ TEST(BillboardSet, CountsAndRanges) {
     ivec4 range = set.ranges[size_t(r)].range;
     EXPECT_EQ(range.y, 2) << "D = the floor + the box's billboard for this reflector";
     EXPECT_EQ(range.w, 1) << "R - 1 reflective billboards";
+    EXPECT_EQ(range.z, range.x + range.y)
+        << "the reflective entries follow the diffuse ones (the shader tests both in one loop)";
     for (int k = range.x; k < range.x + range.y; ++k) {
       const BillboardSpec& b = set.billboards[size_t(set.entries[size_t(k)])];
       EXPECT_NE(b.kind, BillboardSpec::Kind::kReflective);

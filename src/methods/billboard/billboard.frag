@@ -1,10 +1,10 @@
 // Method `billboard`: the reflected scene replaced by billboards (the impostor paper, §3.1, and
 // the order-K pixel algorithm of its slides). For reflection order K, at each bounce the ray
-// tests the diffuse billboards built for the reflector it leaves and, unless it is the last
-// bounce, the reflective billboards of the other reflectors; the nearest alpha-tested hit wins:
-// a diffuse billboard gives its texel, a reflective one reflects the ray about its texel's normal
-// from its texel's surface point, and a miss gives the environment (without the billboarded
-// objects). Cost O(K (D + R)) per pixel; the billboards live in storage buffers, so any number
+// tests the diffuse billboards built for the reflector it leaves and the reflective billboards
+// of the other reflectors (on the last bounce only with --last-bounce all); the nearest
+// alpha-tested hit wins: a diffuse billboard gives its texel, a reflective one reflects the ray
+// about its texel's normal from its texel's surface point (or, with no bounce left, gives that
+// reflector's base colour), and a miss gives the environment (without the billboarded objects). Cost O(K (D + R)) per pixel; the billboards live in storage buffers, so any number
 // renders.
 #include "render/shaders/reflector.glsl"
 #include "methods/billboard/billboard_shared.h"
@@ -27,11 +27,19 @@ uniform int u_ground = -1;
 uniform vec3 u_morph_min;
 uniform vec3 u_morph_max;
 uniform vec3 u_morph_centre;
+// 1: the last bounce also tests reflective billboards, and a hit ends the path with that
+// reflector's base colour (what the ray tracer shows at order K); 0: the paper's count, the
+// last bounce tests diffuse billboards only.
+uniform int u_last_bounce_reflective = 1;
 
 BillboardData billboard_data(int index) { return billboards[index]; }
 int billboard_list_entry(int position) { return billboard_entries[position]; }
+// The nearest texel's coverage: the alpha test needs no filtering, and a fetch is a fraction of
+// a filtered lookup's cost on llvmpipe.
 float billboard_coverage(BillboardData b, vec2 uv) {
-  return textureLod(u_billboard_surface, vec3(uv, float(b.info.y)), 0.0f).a;
+  ivec2 size = textureSize(u_billboard_surface, 0).xy;
+  ivec2 texel = clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1);
+  return texelFetch(u_billboard_surface, ivec3(texel, b.info.y), 0).a;
 }
 
 #include "methods/billboard/billboard_nearest_shared.h"
@@ -63,17 +71,18 @@ vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflecto
   // Where the path ends: a billboard texel (layer >= 0, uv, footprint) or the environment
   // along env_dir.
   float end_layer = -1.0f;
+  int end_reflector = -1;  // the material of a reflector hit on the last bounce
   vec2 end_uv = vec2(0.0f), end_dx = vec2(0.0f), end_dy = vec2(0.0f);
   vec3 env_dir = dir;
   for (int bounce = 1; bounce <= order; ++bounce) {
     ivec4 range = billboard_ranges[from].range;
     float t = MISS_DISTANCE;
     vec2 uv = vec2(0.0f);
-    int hit = nearest_billboard(origin, dir, range.x, range.y, t_min, t, uv);
-    if (bounce < order) {
-      int reflective = nearest_billboard(origin, dir, range.z, range.w, t_min, t, uv);
-      if (reflective >= 0) hit = reflective;
-    }
+    // The reflector's list holds its diffuse billboards, then the reflective ones right after
+    // (range.z == range.x + range.y): one loop tests both.
+    bool reflective = bounce < order || u_last_bounce_reflective != 0;
+    int hit = nearest_billboard(origin, dir, range.x, range.y + (reflective ? range.w : 0), t_min,
+                                t, uv);
     // The ground box, if nearer than every billboard: the ground billboard through its floor,
     // the morph on a wall, the environment through the open top.
     int face = -1;
@@ -108,6 +117,10 @@ vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflecto
       end_dy = billboard_uv_differential(b, dir, t, doy, ddy);
       break;
     }
+    if (bounce == order) {
+      end_reflector = b.info.w;  // no bounce left: the reflector's base colour
+      break;
+    }
     // A reflective billboard: continue from its surface point, about its normal.
     vec3 n = normalize(textureLod(u_billboard_surface, vec3(uv, float(b.info.y)), 0.0f).xyz);
     vec3 p = textureLod(u_billboard_position, vec3(uv, b.corner.w), 0.0f).xyz;
@@ -137,5 +150,6 @@ vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflecto
   vec4 texel = textureLod(u_billboard_surface, vec3(end_uv, max(end_layer, 0.0f)), texel_lod);
   // Premultiplied by coverage: dividing by alpha averages the covered texels only.
   vec3 radiance = end_layer >= 0.0f ? texel.rgb / max(texel.a, 1.0e-4f) : env;
+  if (end_reflector >= 0) radiance = reflector_base(materials[end_reflector]);
   return vec4(sum + throughput * radiance, first_distance);
 }

@@ -18,6 +18,7 @@ class BillboardMethod final : public Method {
         options_{float(setup.params.real("billboard-fov")),
                  setup.params.text("billboard-objects") == "all",
                  float(setup.params.real("morph-height"))},
+        last_bounce_reflective_(setup.params.text("last-bounce") == "all"),
         env_size_(setup.params.integer("envmap-size")),
         capture_(setup.params.integer("billboard-size")),
         program_(gpu::Program::graphics("render/shaders/scene.vert",
@@ -63,6 +64,7 @@ class BillboardMethod final : public Method {
     const bool captured_env = !set_.environmentInstances().empty();
     (captured_env ? environment_ : frame.gpu.environment()).bind(MIRAGE_UNIT_BILLBOARD_ENV);
     program_.set("u_ground", set_.ground);
+    program_.set("u_last_bounce_reflective", last_bounce_reflective_ ? 1 : 0);
     if (set_.ground >= 0) {
       program_.set("u_morph_min", set_.morph_box.lo);
       program_.set("u_morph_max", set_.morph_box.hi);
@@ -121,6 +123,7 @@ class BillboardMethod final : public Method {
 
   const MethodInfo& info_;
   BillboardSetOptions options_;
+  bool last_bounce_reflective_;
   int env_size_;
   BillboardCapture capture_;
   gpu::Program program_, base_program_;
@@ -152,6 +155,10 @@ MethodEntry billboardMethodEntry() {
       ParamSpec::choice("billboard-objects", {"all", "planar"}, "all",
                         "which diffuse objects get billboards: all, or planar ones only (the "
                         "others are reflected through a captured environment map)"),
+      ParamSpec::choice("last-bounce", {"all", "diffuse"}, "all",
+                        "what the last bounce tests: all billboards (a reflector hit shows its "
+                        "base colour, as the ray tracer at order K) or diffuse ones only (the "
+                        "paper's D + R - 1 + D count)"),
       ParamSpec::real("morph-height", 0.0, 1.0e6, 0.0,
                       "height of the transition walls that morph the ground billboard into the "
                       "environment (scene units; 0 = off)"),

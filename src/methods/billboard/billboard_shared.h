@@ -40,6 +40,7 @@ struct BillboardData {
 
 // Per reflector (0-based), which list entries its rays test: x, y: first entry and count of
 // diffuse billboards; z, w: first entry and count of reflective billboards (never its own).
+// The reflective entries follow the diffuse ones (z == x + y), so one loop can test both.
 struct BillboardRange {
   ivec4 range;
 };
