@@ -69,6 +69,7 @@ int main(int argc, char** argv) {
   registerFrameBenchmarks();
   registerEnvironmentBenchmarks();
   registerGlBenchmarks();
+  registerSrdmBenchmarks();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

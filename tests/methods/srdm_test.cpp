@@ -1,0 +1,210 @@
+// Simplified rotated depth maps on the CPU: row simplification (the impostor paper, §4.2), the
+// builder, and the shared ray-SRDM intersection (§4.3) against brute-force marching of the full
+// depth map.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "core/error.h"
+#include "methods/depthmap/srdm.h"
+#include "methods/depthmap/srdm_shared.h"
+
+namespace mirage {
+namespace {
+
+// A depth map of spheres seen by a pinhole camera at the origin looking down -z (vertical and
+// horizontal field of view 40 degrees), ray-cast analytically: GL depth of the nearest hit.
+DepthMap spheresDepthMap(int size, const std::vector<vec4>& spheres, float near = 1.0f,
+                         float far = 5.0f) {
+  DepthMap map;
+  map.size = size;
+  map.near = near;
+  map.far = far;
+  map.depth.assign(size_t(size) * size_t(size), 1.0f);
+  const float half = std::tan(glm::radians(20.0f));
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      const vec3 dir =
+          glm::normalize(vec3((2.0f * (float(x) + 0.5f) / float(size) - 1.0f) * half,
+                              (2.0f * (float(y) + 0.5f) / float(size) - 1.0f) * half, -1.0f));
+      float best = 1e30f;
+      for (const vec4& s : spheres) {
+        const vec3 c(s);
+        const float b = glm::dot(dir, c), disc = b * b - glm::dot(c, c) + s.w * s.w;
+        if (disc < 0.0f) continue;
+        const float t = b - std::sqrt(disc);
+        if (t > 0.0f) best = std::min(best, t);
+      }
+      if (best >= 1e30f) continue;
+      const float z = best * -dir.z;  // eye depth along the axis
+      if (z <= near || z >= far) continue;
+      map.depth[size_t(y) * size_t(size) + size_t(x)] = far * (z - near) / (z * (far - near));
+    }
+  return map;
+}
+
+DepthMap testMap(int size = 128) {
+  // A large sphere with a smaller one in front of its edge: spans, silhouettes, a depth step.
+  return spheresDepthMap(size, {vec4(0.0f, 0.0f, -3.0f, 0.8f), vec4(0.55f, 0.35f, -2.2f, 0.3f),
+                                vec4(-0.7f, -0.6f, -3.5f, 0.25f)});
+}
+
+RowSamples syntheticRow(const std::vector<float>& d) {
+  RowSamples row;
+  row.spacing = 1.0f;
+  row.d = d;
+  for (size_t k = 0; k < d.size(); ++k) row.s.push_back(float(k) + 0.5f);
+  return row;
+}
+
+TEST(SrdmRow, ExactForPiecewiseLinearRowsWithAtMostMVertices) {
+  // Background, then a tent with a kink (vertices at samples 3, 9, 14, 20), then background.
+  std::vector<float> d(26, 1.0f);
+  auto lerp = [](float a, float b, float u) { return a + (b - a) * u; };
+  for (int k = 3; k <= 20; ++k)
+    d[size_t(k)] = k <= 9    ? lerp(0.5f, 0.2f, float(k - 3) / 6.0f)
+                   : k <= 14 ? lerp(0.2f, 0.35f, float(k - 9) / 5.0f)
+                             : lerp(0.35f, 0.3f, float(k - 14) / 6.0f);
+  DepthMap map;
+  map.near = 1.0f;
+  map.far = 5.0f;
+  const RowSamples row = syntheticRow(d);
+  for (SrdmSimplifier simplifier : {SrdmSimplifier::kGreedy, SrdmSimplifier::kFit}) {
+    RowPolyline poly;
+    simplifyRow(map, row, 6, simplifier, poly);
+    ASSERT_LE(poly.points.size(), 6u);
+    for (int k = 3; k <= 20; ++k)
+      EXPECT_NEAR(evaluateRow(poly, row.s[size_t(k)]), d[size_t(k)], 1e-5f)
+          << srdmSimplifierName(simplifier) << " sample " << k;
+    EXPECT_LT(evaluateRow(poly, row.s[1]), 0.0f) << "background before the span";
+    EXPECT_LT(evaluateRow(poly, row.s[23]), 0.0f) << "background after the span";
+  }
+}
+
+TEST(SrdmRow, GapsAreNeverBridgedAndExtraSpansDropTheShortest) {
+  // Four spans of lengths 3, 1, 5, 2 with m = 6: room for three; the single sample goes.
+  std::vector<float> d(20, 1.0f);
+  for (int k : {1, 2, 3, 6, 9, 10, 11, 12, 13, 16, 17}) d[size_t(k)] = 0.4f;
+  DepthMap map;
+  RowPolyline poly;
+  simplifyRow(map, syntheticRow(d), 6, SrdmSimplifier::kGreedy, poly);
+  EXPECT_EQ(poly.points.size(), 6u);
+  EXPECT_EQ(poly.dropped, 1);
+  EXPECT_LT(evaluateRow(poly, 6.5f), 0.0f) << "the dropped sliver";
+  EXPECT_LT(evaluateRow(poly, 4.5f), 0.0f) << "a gap";
+  EXPECT_LT(evaluateRow(poly, 14.5f), 0.0f) << "a gap";
+  EXPECT_NEAR(evaluateRow(poly, 11.5f), 0.4f, 1e-6f);
+  EXPECT_NEAR(evaluateRow(poly, 17.5f), 0.4f, 1e-6f);
+}
+
+TEST(SrdmBuild, AtMostMPointsAndErrorFallsAsMGrows) {
+  const DepthMap map = testMap();
+  for (SrdmSimplifier simplifier : {SrdmSimplifier::kGreedy, SrdmSimplifier::kFit}) {
+    double previous = 1e9;
+    for (int m : {4, 8, 16, 32}) {
+      const Srdm srdm = buildSrdm(map, {30, m, simplifier});
+      ASSERT_EQ(srdm.texels.size(), size_t(30 * 128 * ((m + 1) / 2)));
+      for (int row = 0; row < 128; row += 7)
+        EXPECT_LE(decodeRow(srdm, 11, row).points.size(), size_t(m));
+      const SrdmError e = measureSrdmError(map, srdm);
+      EXPECT_GT(e.samples, 100000);
+      EXPECT_LE(e.mean, previous) << srdmSimplifierName(simplifier) << " m = " << m;
+      previous = e.mean;
+    }
+  }
+}
+
+TEST(SrdmBuild, TheFitBeatsGreedyOnAverage) {
+  const DepthMap map = testMap();
+  for (int m : {6, 8, 12, 16}) {
+    const double greedy =
+        measureSrdmError(map, buildSrdm(map, {30, m, SrdmSimplifier::kGreedy})).mean;
+    const double fit = measureSrdmError(map, buildSrdm(map, {30, m, SrdmSimplifier::kFit})).mean;
+    std::printf("m = %d: mean relative z error greedy %.4f%%, fit %.4f%%\n", m, 100 * greedy,
+                100 * fit);
+    EXPECT_LT(fit, greedy) << "m = " << m;
+  }
+}
+
+TEST(SrdmBuild, RejectsSettingsOutOfRange) {
+  const DepthMap map = testMap(32);
+  EXPECT_THROW(buildSrdm(map, {0, 8, SrdmSimplifier::kGreedy}), InputError);
+  EXPECT_THROW(buildSrdm(map, {60, 1, SrdmSimplifier::kGreedy}), InputError);
+  EXPECT_THROW(buildSrdm(map, {60, 33, SrdmSimplifier::kGreedy}), InputError) << "m > w";
+  EXPECT_THROW(parseSrdmSimplifier("optimal"), InputError);
+}
+
+TEST(SrdmGeometry, DomainsRowsAndTheirInverse) {
+  const float w = 256.0f;
+  for (int i = 0; i < 60; i += 7) {
+    const float theta = shading::srdm_theta(i, 60);
+    const vec2 p(37.25f, 201.5f);
+    const vec2 st = shading::srdm_to_domain(p, theta, w);
+    const vec2 back = shading::srdm_from_domain(st, theta, w);
+    EXPECT_NEAR(back.x, p.x, 1e-3f);
+    EXPECT_NEAR(back.y, p.y, 1e-3f);
+    EXPECT_GE(st.x, 0.0f);
+    EXPECT_LE(st.x, shading::srdm_extent(theta, w));
+    const int row = shading::srdm_row_of(st.y, theta, 256);
+    ASSERT_GE(row, 0);
+    EXPECT_LE(std::abs(shading::srdm_row_t(row, theta, 256) - st.y),
+              0.5f * shading::srdm_extent(theta, w) / w + 1e-3f);
+    // A direction along the domain's rows picks that domain.
+    EXPECT_EQ(shading::srdm_domain_of(vec2(std::cos(theta), std::sin(theta)), 60), i);
+    EXPECT_EQ(shading::srdm_domain_of(-vec2(std::cos(theta), std::sin(theta)), 60), i);
+  }
+}
+
+// The brute-force reference: march the full depth map along the projected ray in small steps
+// (nearest texel) and take the first step from in front of a foreground texel to behind one.
+float marchDepthMap(const DepthMap& map, vec3 from, vec3 to) {
+  const float length = glm::length(vec2(to) - vec2(from));
+  const int steps = std::max(int(length * 8.0f), 1);
+  bool was_in_front = false;
+  for (int i = 0; i <= steps; ++i) {
+    const float u = float(i) / float(steps);
+    const vec3 p = glm::mix(from, to, u);
+    const int x = int(std::floor(p.x)), y = int(std::floor(p.y));
+    if (x < 0 || y < 0 || x >= map.size || y >= map.size || !DepthMap::isForeground(map.at(x, y))) {
+      was_in_front = false;
+      continue;
+    }
+    const bool in_front = p.z < map.at(x, y);
+    if (was_in_front && !in_front) return u;
+    was_in_front = in_front;
+  }
+  return -1.0f;
+}
+
+TEST(SrdmIntersect, AgreesWithBruteForceMarchingOnRandomRays) {
+  const DepthMap map = testMap(128);
+  const Srdm srdm = buildSrdm(map, {60, 16, SrdmSimplifier::kGreedy});
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> xy(0.0f, 128.0f), near_d(0.0f, 0.6f), far_d(0.85f, 1.0f);
+  int agree = 0, both_hit = 0, total = 4000;
+  double depth_error = 0.0;
+  for (int i = 0; i < total; ++i) {
+    // Rays from in front of the object to behind it, as reflected rays that reach it.
+    const vec3 from(xy(rng), xy(rng), near_d(rng)), to(xy(rng), xy(rng), far_d(rng));
+    const float ours = intersectSrdm(srdm, from, to);
+    const float truth = marchDepthMap(map, from, to);
+    agree += (ours >= 0.0f) == (truth >= 0.0f);
+    if (ours >= 0.0f && truth >= 0.0f) {
+      ++both_hit;
+      const float z_ours = map.eyeDepth(glm::mix(from.z, to.z, ours));
+      const float z_truth = map.eyeDepth(glm::mix(from.z, to.z, truth));
+      depth_error += std::abs(z_ours - z_truth) / z_truth;
+    }
+  }
+  const double agreement = double(agree) / total;
+  const double mean_depth_error = depth_error / std::max(both_hit, 1);
+  std::printf("hit/miss agreement %.4f, %d hits in both, mean relative z difference %.4f%%\n",
+              agreement, both_hit, 100.0 * mean_depth_error);
+  EXPECT_GT(both_hit, 500);
+  EXPECT_GT(agreement, 0.95);
+  EXPECT_LT(mean_depth_error, 0.01);
+}
+
+}  // namespace
+}  // namespace mirage
