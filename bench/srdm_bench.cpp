@@ -29,26 +29,34 @@ DepthMap objectDepthMap(const Scene& scene, const std::string& name, int size) {
   throwRuntime("no instance '{}' in scene '{}'", name, scene.name);
 }
 
-// The maps, built on first use and kept for the process.
-const DepthMap* depthMapNamed(const std::string& which) {
-  static std::map<std::string, DepthMap> maps;
-  auto it = maps.find(which);
-  if (it != maps.end()) return &it->second;
-  if (which == "teapot")
-    return &(maps[which] = objectDepthMap(makeBuiltinScene("spheres9"), "teapot", 256));
-  try {
-    return &(maps[which] = objectDepthMap(loadScene("bunny"), "bunny", 256));
-  } catch (const Error& e) {
-    return nullptr;
+// The maps, built (or found missing, with the reason) on first use and kept for the process.
+struct NamedMap {
+  DepthMap map;
+  std::string missing;  // why there is no map: the bunny's assets are not fetched
+};
+const NamedMap& depthMapNamed(const std::string& which) {
+  static std::map<std::string, NamedMap> maps;
+  auto [it, added] = maps.try_emplace(which);
+  if (!added) return it->second;
+  if (which == "teapot") {
+    it->second.map = objectDepthMap(makeBuiltinScene("spheres9"), "teapot", 256);
+    return it->second;
   }
+  try {
+    it->second.map = objectDepthMap(loadScene("bunny"), "bunny", 256);
+  } catch (const Error& e) {
+    it->second.missing = e.what();
+  }
+  return it->second;
 }
 
 void buildSrdms(benchmark::State& state, const std::string& which, SrdmSimplifier simplifier) {
-  const DepthMap* map = depthMapNamed(which);
-  if (!map) {
-    state.SkipWithError("the bunny asset is not fetched (scripts/fetch-assets)");
+  const NamedMap& named = depthMapNamed(which);
+  if (!named.missing.empty()) {
+    state.SkipWithError(named.missing.c_str());
     return;
   }
+  const DepthMap* map = &named.map;
   const SrdmSettings settings{int(state.range(0)), int(state.range(1)), simplifier};
   Srdm srdm;
   for (auto _ : state) {

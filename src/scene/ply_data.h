@@ -23,6 +23,15 @@ struct Position {
   uint64_t index = 0;
 };
 
+// A value read for an integer property (a list length, an index): every PLY integer type is
+// exact in a double, and a float property must hold a whole number that fits.
+template <typename Reader>
+int64_t wholeNumber(const Reader& reader, double v) {
+  if (!(v >= -9.0e15 && v <= 9.0e15) || v != double(int64_t(v)))
+    reader.fail(fmt::format("value {} is not an integer", v));
+  return int64_t(v);
+}
+
 class AsciiReader {
  public:
   AsciiReader(const Position& at, std::string_view data, int first_line)
@@ -56,7 +65,7 @@ class AsciiReader {
     return v;
   }
   int64_t integer(Type type) {
-    if (!isInteger(type)) return integral(real(type));
+    if (!isInteger(type)) return wholeNumber(*this, real(type));
     std::string_view t = token();
     if (t.size() > 1 && t[0] == '+') t.remove_prefix(1);
     int64_t v = 0;
@@ -112,11 +121,6 @@ class AsciiReader {
     while (e < end_ && !isSpace(*e) && e - p_ < 40) ++e;
     return std::string(p_, e);
   }
-  int64_t integral(double v) const {
-    if (!(v >= -9.0e15 && v <= 9.0e15) || v != double(int64_t(v)))
-      fail(fmt::format("value {} is not an integer", v));
-    return int64_t(v);
-  }
 
   const Position& at_;
   const char* p_;
@@ -153,28 +157,7 @@ class BinaryReader {
     }
     return 0;
   }
-  int64_t integer(Type t) {
-    switch (t) {
-      case Type::kInt8:
-        return load<int8_t>();
-      case Type::kUint8:
-        return load<uint8_t>();
-      case Type::kInt16:
-        return load<int16_t>();
-      case Type::kUint16:
-        return load<uint16_t>();
-      case Type::kInt32:
-        return load<int32_t>();
-      case Type::kUint32:
-        return load<uint32_t>();
-      default:
-        break;
-    }
-    double v = real(t);
-    if (!(v >= -9.0e15 && v <= 9.0e15) || v != double(int64_t(v)))
-      fail(fmt::format("value {} is not an integer", v));
-    return int64_t(v);
-  }
+  int64_t integer(Type t) { return wholeNumber(*this, real(t)); }
   void skip(Type t) { skipBytes(typeSize(t)); }
   void skipList(Type count_type, Type item_type) {
     skipBytes(uint64_t(count(count_type)) * typeSize(item_type));

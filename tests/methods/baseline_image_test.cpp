@@ -127,12 +127,9 @@ TEST_F(BaselineImages, HigherOrderChangesOnlyReflectorPixels) {
     renderer.render(*b, view, 0.0f, three);
     RenderedFrame fb = renderer.read();
     size_t changed_reflector = 0, changed_other = 0;
-    for (size_t i = 0; i < fa.color.pixelCount(); ++i) {
-      bool changed = glm::any(glm::greaterThan(
-          glm::abs(vec3(fa.color.data()[i]) - vec3(fb.color.data()[i])), vec3(1e-5f)));
-      if (!changed) continue;
-      (fa.ids.data()[i] != 0 ? changed_reflector : changed_other)++;
-    }
+    const std::vector<bool> changed = changedPixels(fa.color, fb.color);
+    for (size_t i = 0; i < changed.size(); ++i)
+      if (changed[i]) (fa.ids.data()[i] != 0 ? changed_reflector : changed_other)++;
     EXPECT_EQ(changed_other, 0u) << method;
     EXPECT_GT(changed_reflector, 100u)
         << method << ": mirror-in-mirror paths must appear at order 3";

@@ -50,15 +50,6 @@ TEST_F(BillboardImages, ApproximatesSpheres9BetterThanProbes) {
   EXPECT_GT(reflectorPsnr(billboard), reflectorPsnr(probe) + 2.0);
 }
 
-// Which pixels change between two frames of the same view (any channel by more than 1e-5).
-std::vector<bool> changedPixels(const Image& a, const Image& b) {
-  std::vector<bool> changed(a.pixelCount());
-  for (size_t i = 0; i < changed.size(); ++i)
-    changed[i] =
-        glm::any(glm::greaterThan(glm::abs(vec3(a.data()[i]) - vec3(b.data()[i])), vec3(1e-5f)));
-  return changed;
-}
-
 TEST_F(BillboardImages, OrderKChangesOnlyWhereKthOrderPathsExist) {
   // Two facing mirrors and a sphere: raising the order from K - 1 to K must change the
   // billboard image where the ray tracer's image changes (paths with a K-th reflection) and

@@ -47,4 +47,12 @@ std::string writeArtifacts(const Image& actual, const Image& expected, const std
          << "%); images in " << writeArtifacts(actual, expected, tag);
 }
 
+std::vector<bool> changedPixels(const Image& a, const Image& b) {
+  std::vector<bool> changed(a.pixelCount());
+  for (size_t i = 0; i < changed.size(); ++i)
+    changed[i] =
+        glm::any(glm::greaterThan(glm::abs(vec3(a.data()[i]) - vec3(b.data()[i])), vec3(1e-5f)));
+  return changed;
+}
+
 }  // namespace mirage::test

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -24,5 +25,8 @@ std::string writeArtifacts(const Image& actual, const Image& expected, const std
 ::testing::AssertionResult mostPixelsWithin(const Image& actual, const Image& expected,
                                             float tolerance, double max_fraction,
                                             const IdImage* mask, const std::string& tag);
+
+// Per pixel, whether any colour channel of `a` and `b` differs by more than 1e-5.
+std::vector<bool> changedPixels(const Image& a, const Image& b);
 
 }  // namespace mirage::test
