@@ -1,11 +1,11 @@
-// The alpha-tested nearest billboard hit (methods/billboard/billboard_nearest_shared.h) and the
+// The alpha-tested nearest billboard hit (methods/impostor/billboard_nearest_shared.h) and the
 // footprint of a hit, on the CPU: billboard.frag runs this very code over its storage buffers.
 #include <gtest/gtest.h>
 
 #include <random>
 #include <vector>
 
-#include "methods/billboard/billboard_shared.h"
+#include "methods/impostor/billboard_shared.h"
 
 // The accessors the shared search reads billboards through (the shader's read buffers and
 // textures). Coverage: each billboard is opaque but for a square hole in its middle.
@@ -25,7 +25,7 @@ inline float billboard_coverage(BillboardData, vec2 uv) {
 }
 }  // namespace mirage::shading
 
-#include "methods/billboard/billboard_nearest_shared.h"
+#include "methods/impostor/billboard_nearest_shared.h"
 
 namespace mirage {
 namespace {

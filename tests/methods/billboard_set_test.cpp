@@ -3,7 +3,7 @@
 // reflector, and reflectors get one per other reflector; the capture camera frames the quad.
 #include <gtest/gtest.h>
 
-#include "methods/billboard/billboard_set.h"
+#include "methods/impostor/billboard_set.h"
 #include "support/scenes.h"
 
 namespace mirage::test {

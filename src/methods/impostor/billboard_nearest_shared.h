@@ -5,10 +5,10 @@
 //   BillboardData billboard_data(int index);             // a billboard
 //   int billboard_list_entry(int position);              // the billboard index at `position`
 //   float billboard_coverage(BillboardData b, vec2 uv);  // alpha at level 0, in [0, 1]
-#ifndef MIRAGE_METHODS_BILLBOARD_BILLBOARD_NEAREST_SHARED_H
-#define MIRAGE_METHODS_BILLBOARD_BILLBOARD_NEAREST_SHARED_H
+#ifndef MIRAGE_METHODS_IMPOSTOR_BILLBOARD_NEAREST_SHARED_H
+#define MIRAGE_METHODS_IMPOSTOR_BILLBOARD_NEAREST_SHARED_H
 
-#include "methods/billboard/billboard_shared.h"
+#include "methods/impostor/billboard_shared.h"
 
 SHARED_BEGIN
 
@@ -34,4 +34,4 @@ SHARED_FN int nearest_billboard(vec3 origin, vec3 dir, int first, int count, flo
 
 SHARED_END
 
-#endif  // MIRAGE_METHODS_BILLBOARD_BILLBOARD_NEAREST_SHARED_H
+#endif  // MIRAGE_METHODS_IMPOSTOR_BILLBOARD_NEAREST_SHARED_H

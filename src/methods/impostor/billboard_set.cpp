@@ -1,4 +1,4 @@
-#include "methods/billboard/billboard_set.h"
+#include "methods/impostor/billboard_set.h"
 
 #include <algorithm>
 #include <cmath>
@@ -77,6 +77,8 @@ BillboardSet placeBillboards(const Scene& scene, float time, const BillboardSetO
   std::vector<int> planar, objects;
   for (int i = 0; i < int(scene.instances.size()); ++i) {
     if (scene.isReflector(i)) continue;
+    if (std::find(options.excluded.begin(), options.excluded.end(), i) != options.excluded.end())
+      continue;
     if (isPlanarInstance(scene, i, scene.instances[size_t(i)].matrixAt(time)))
       planar.push_back(i);
     else if (options.objects)

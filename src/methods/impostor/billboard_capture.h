@@ -9,7 +9,7 @@
 #include "gpu/framebuffer.h"
 #include "gpu/program.h"
 #include "gpu/texture.h"
-#include "methods/billboard/billboard_set.h"
+#include "methods/impostor/billboard_set.h"
 #include "render/gpu_scene.h"
 #include "render/scene_passes.h"
 

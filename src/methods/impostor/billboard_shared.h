@@ -1,8 +1,8 @@
 // Billboards as the shaders and the C++ code see them (the impostor paper, §3): the storage
 // layout and the ray-billboard intersection. One copy of this code runs in billboard.frag and in
 // the C++ tests; billboard_nearest_shared.h adds the alpha-tested nearest hit over a list.
-#ifndef MIRAGE_METHODS_BILLBOARD_BILLBOARD_SHARED_H
-#define MIRAGE_METHODS_BILLBOARD_BILLBOARD_SHARED_H
+#ifndef MIRAGE_METHODS_IMPOSTOR_BILLBOARD_SHARED_H
+#define MIRAGE_METHODS_IMPOSTOR_BILLBOARD_SHARED_H
 
 #include "shading/glsl_compat.h"
 #include "shading/proxy.h"
@@ -88,4 +88,4 @@ static_assert(sizeof(mirage::shading::BillboardData) == 5 * 16, "BillboardData l
 static_assert(sizeof(mirage::shading::BillboardRange) == 16, "BillboardRange layout");
 #endif
 
-#endif  // MIRAGE_METHODS_BILLBOARD_BILLBOARD_SHARED_H
+#endif  // MIRAGE_METHODS_IMPOSTOR_BILLBOARD_SHARED_H

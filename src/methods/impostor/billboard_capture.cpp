@@ -1,4 +1,4 @@
-#include "methods/billboard/billboard_capture.h"
+#include "methods/impostor/billboard_capture.h"
 
 namespace mirage {
 
@@ -21,9 +21,9 @@ BillboardCapture::BillboardCapture(int size)
     : size_(size),
       depth_(gpu::Texture::create2D(GL_DEPTH_COMPONENT32F, size, size)),
       diffuse_program_(gpu::Program::graphics("render/shaders/scene.vert",
-                                              "methods/billboard/capture_diffuse.frag")),
+                                              "methods/impostor/capture_diffuse.frag")),
       reflector_program_(gpu::Program::graphics("render/shaders/scene.vert",
-                                                "methods/billboard/capture_reflector.frag")) {
+                                                "methods/impostor/capture_reflector.frag")) {
   fbo_.attachDepth(depth_);
 }
 

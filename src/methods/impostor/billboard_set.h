@@ -17,7 +17,7 @@
 
 #include "core/bounds.h"
 #include "core/camera.h"
-#include "methods/billboard/billboard_shared.h"
+#include "methods/impostor/billboard_shared.h"
 #include "scene/scene.h"
 
 namespace mirage {
@@ -38,6 +38,9 @@ struct BillboardSetOptions {
   float fov_degrees = 10.0f;  // the capture camera's field of view (objects, reflectors)
   bool objects = true;        // billboards for non-planar diffuse objects too (else planar only)
   float morph_height = 0.0f;  // > 0: transition walls of this height around the ground (§3.2)
+  // Instances that another impostor stands for (depth maps): no billboard, and not in the
+  // captured environment.
+  std::vector<int> excluded;
 };
 
 struct BillboardSet {

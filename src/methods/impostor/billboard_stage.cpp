@@ -1,0 +1,131 @@
+#include "methods/impostor/billboard_stage.h"
+
+#include <span>
+
+namespace mirage {
+
+std::vector<ParamSpec> billboardStageParams() {
+  return {ParamSpec::integer("billboard-size", 16, 4096, 256,
+                             "face size of each billboard texture, in texels"),
+          ParamSpec::real("billboard-fov", 1.0, 60.0, 10.0,
+                          "field of view of the billboard capture camera, in degrees"),
+          ParamSpec::choice("billboard-objects", {"all", "planar"}, "all",
+                            "which diffuse objects get billboards: all, or planar ones only (the "
+                            "others are reflected through a captured environment map)"),
+          ParamSpec::choice("last-bounce", {"all", "diffuse"}, "all",
+                            "what the last bounce tests: all billboards (a reflector hit shows its "
+                            "base colour, as the ray tracer at order K) or diffuse ones only (the "
+                            "paper's D + R - 1 + D count)"),
+          ParamSpec::real("morph-height", 0.0, 1.0e6, 0.0,
+                          "height of the transition walls that morph the ground billboard into the "
+                          "environment (scene units; 0 = off)"),
+          ParamSpec::integer("envmap-size", 8, 2048, 256,
+                             "face size of each reflector's cube map, in texels")};
+}
+
+BillboardStageOptions billboardStageOptions(const ParamValues& params) {
+  BillboardStageOptions o;
+  o.set.fov_degrees = float(params.real("billboard-fov"));
+  o.set.objects = params.text("billboard-objects") == "all";
+  o.set.morph_height = float(params.real("morph-height"));
+  o.billboard_size = params.integer("billboard-size");
+  o.envmap_size = params.integer("envmap-size");
+  return o;
+}
+
+void drawReflectorsOnce(ScenePasses& passes, const gpu::Program& depth_program,
+                        const gpu::Program& program) {
+  glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  passes.drawReflectors(depth_program);
+  glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_FALSE);
+  passes.drawReflectors(program);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+}
+
+BillboardStage::BillboardStage(const BillboardStageOptions& options)
+    : options_(options), capture_(options.billboard_size) {}
+
+void BillboardStage::update(FrameContext& frame) {
+  GpuScene& gpu = frame.gpu;
+  // Placements and captures depend on the scene's state only (its version) and on the mip
+  // setting; a frame that changes neither (a camera move) has nothing to redo.
+  if (updated_ && updated_version_ == gpu.version() && updated_mip_ == frame.settings.mip) {
+    last_captures_ = 0;
+    return;
+  }
+  const Scene& scene = gpu.scene();
+  set_ = placeBillboards(scene, gpu.time(), options_.set);
+  std::vector<shading::BillboardData> data = set_.gpuData(scene);
+  billboards_.upload(std::span<const shading::BillboardData>(data));
+  ranges_.upload(std::span<const shading::BillboardRange>(set_.ranges));
+  // An empty list still needs a buffer to bind.
+  std::vector<int> entries = set_.entries;
+  if (entries.empty()) entries.push_back(0);
+  entries_.upload(std::span<const int>(entries));
+  last_captures_ = capture_.update(gpu, frame.passes, set_, frame.settings);
+  updateEnvironment(frame);
+  updated_ = true;
+  updated_version_ = gpu.version();
+  updated_mip_ = frame.settings.mip;
+}
+
+void BillboardStage::bind(const gpu::Program& program, const GpuScene& gpu) const {
+  billboards_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_BILLBOARDS);
+  ranges_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_BILLBOARD_RANGES);
+  entries_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_BILLBOARD_ENTRIES);
+  capture_.surfaces().bind(MIRAGE_UNIT_BILLBOARD_SURFACE);
+  capture_.positions().bind(MIRAGE_UNIT_BILLBOARD_POSITION);
+  const bool captured_env = !set_.environmentInstances().empty();
+  (captured_env ? environment_ : gpu.environment()).bind(MIRAGE_UNIT_BILLBOARD_ENV);
+  program.set("u_ground", set_.ground);
+  if (set_.ground >= 0) {
+    program.set("u_morph_min", set_.morph_box.lo);
+    program.set("u_morph_max", set_.morph_box.hi);
+    program.set("u_morph_centre", set_.environment_centre);
+  }
+}
+
+std::map<std::string, double> BillboardStage::stats() const {
+  int diffuse = 0, reflective = 0;
+  for (const BillboardSpec& b : set_.billboards)
+    (b.kind == BillboardSpec::Kind::kReflective ? reflective : diffuse)++;
+  return {{"billboard_captures", double(capture_.captures())},
+          {"billboard_captures_last_update", double(last_captures_)},
+          {"diffuse_billboards", double(diffuse)},
+          {"reflective_billboards", double(reflective)},
+          {"environment_captures", double(env_captures_)}};
+}
+
+// Diffuse objects without impostors (and the ground, when it morphs into the environment) are
+// reflected through a cube map captured at the reflectors' centroid E, with the distant
+// environment; re-captured when the scene changes.
+void BillboardStage::updateEnvironment(FrameContext& frame) {
+  const std::vector<int> instances = set_.environmentInstances();
+  if (instances.empty()) return;
+  GpuScene& gpu = frame.gpu;
+  if (env_valid_ && env_version_ == gpu.version()) return;
+  const Scene& scene = gpu.scene();
+  const vec3 centre = set_.environment_centre;
+  const int size = options_.envmap_size;
+  const int levels = frame.settings.mip ? gpu::Texture::fullMipLevels(size) : 1;
+  if (environment_.levels() != levels)
+    environment_ = gpu::Texture::createCube(GL_RGBA16F, size, levels);
+  if (!cube_) cube_ = std::make_unique<CubeCapture>(size);
+  const float radius = std::max(scene.bounds(gpu.time()).radius(), 1e-3f);
+  cube_->capture(environment_, 0, centre, 1e-3f * radius, 100.0f * radius, [&](const View& v) {
+    frame.passes.begin(v, frame.settings);
+    frame.passes.drawBackground();
+    frame.passes.drawDiffuseInstances(instances);
+  });
+  if (levels > 1) environment_.generateMipmaps();
+  env_valid_ = true;
+  env_version_ = gpu.version();
+  ++env_captures_;
+}
+
+}  // namespace mirage

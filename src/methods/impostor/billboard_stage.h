@@ -1,0 +1,68 @@
+// The billboard half of the impostor paper's reflected scene, as every impostor method uses it:
+// billboards placed (billboard_set.h) and captured (billboard_capture.h), their storage
+// buffers, and the environment the reflections miss into (captured at the reflectors' centroid
+// when objects without impostors, or the morphing ground, must appear in it). `billboard` draws
+// with this alone; `depthmap` adds depth-map impostors for the objects it takes out of it.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gpu/buffer.h"
+#include "gpu/program.h"
+#include "gpu/texture.h"
+#include "methods/impostor/billboard_capture.h"
+#include "methods/impostor/billboard_set.h"
+#include "methods/method.h"
+#include "render/cube_capture.h"
+
+namespace mirage {
+
+struct BillboardStageOptions {
+  BillboardSetOptions set;
+  int billboard_size = 256;  // texels per billboard side
+  int envmap_size = 256;     // face size of the captured environment
+};
+
+// The parameters every impostor method takes for its billboards, and the options they make.
+std::vector<ParamSpec> billboardStageParams();
+BillboardStageOptions billboardStageOptions(const ParamValues& params);
+
+// Draws the reflectors' depth with `depth_program` (colour writes off), then `program` once per
+// visible reflector pixel (depth test LEQUAL, no depth writes): the expensive shader runs once
+// per pixel, with no overdraw.
+void drawReflectorsOnce(ScenePasses& passes, const gpu::Program& depth_program,
+                        const gpu::Program& program);
+
+class BillboardStage {
+ public:
+  explicit BillboardStage(const BillboardStageOptions& options);
+
+  // Places and captures what changed since the last call (nothing for a camera move).
+  void update(FrameContext& frame);
+  // Binds the buffers, textures and morph uniforms that impostor_trace.glsl reads.
+  void bind(const gpu::Program& program, const GpuScene& gpu) const;
+  bool empty() const { return set_.ranges.empty(); }
+  const BillboardSet& set() const { return set_; }
+  std::map<std::string, double> stats() const;
+
+ private:
+  void updateEnvironment(FrameContext& frame);
+
+  BillboardStageOptions options_;
+  BillboardCapture capture_;
+  BillboardSet set_;
+  gpu::Buffer billboards_, ranges_, entries_;
+  gpu::Texture environment_;
+  std::unique_ptr<CubeCapture> cube_;
+  bool env_valid_ = false;
+  uint64_t env_version_ = 0;
+  long env_captures_ = 0;
+  int last_captures_ = 0;
+  bool updated_ = false, updated_mip_ = false;
+  uint64_t updated_version_ = 0;
+};
+
+}  // namespace mirage

@@ -1,0 +1,176 @@
+// The impostor paper's pixel algorithm for reflection order K, shared by the impostor methods'
+// reflector shaders: at each bounce the ray tests the diffuse billboards built for the reflector
+// it leaves and the reflective billboards of the other reflectors (on the last bounce only with
+// u_last_bounce_reflective), and whatever other impostors the includer adds; the nearest
+// alpha-tested hit wins: a diffuse billboard gives its texel, a reflective one reflects the ray
+// about its texel's normal from its texel's surface point (or, with no bounce left, gives that
+// reflector's base colour), and a miss gives the environment (without the impostored objects).
+//
+// The includer defines, before including this file, the other impostors' hooks:
+//   // The nearest hit of its impostors along the ray with t_min < t < t_best, for rays leaving
+//   // reflector `from` (0-based): lowers t_best, sets `end` (what the path's end looks up) and
+//   // returns true; false leaves both. dox..ddy: the ray differential, for the footprint.
+//   bool impostor_extra_hit(vec3 origin, vec3 dir, int from, float t_min, inout float t_best,
+//                           vec3 dox, vec3 doy, vec3 ddx, vec3 ddy, out vec4 end);
+//   // The radiance at a path's end that impostor_extra_hit found.
+//   vec3 impostor_extra_radiance(vec4 end);
+#include "render/shaders/reflector.glsl"
+#include "methods/impostor/billboard_shared.h"
+
+layout(std430, binding = MIRAGE_BIND_BILLBOARDS) readonly buffer BillboardBlock {
+  BillboardData billboards[];
+};
+layout(std430, binding = MIRAGE_BIND_BILLBOARD_RANGES) readonly buffer RangeBlock {
+  BillboardRange billboard_ranges[];
+};
+layout(std430, binding = MIRAGE_BIND_BILLBOARD_ENTRIES) readonly buffer EntryBlock {
+  int billboard_entries[];
+};
+layout(binding = MIRAGE_UNIT_BILLBOARD_SURFACE) uniform sampler2DArray u_billboard_surface;
+layout(binding = MIRAGE_UNIT_BILLBOARD_POSITION) uniform sampler2DArray u_billboard_position;
+layout(binding = MIRAGE_UNIT_BILLBOARD_ENV) uniform samplerCube u_billboard_env;
+// The billboard-to-environment morph (§3.2; u_ground >= 0 when on): the ground billboard and its
+// transition walls form the box [u_morph_min, u_morph_max]; E = u_morph_centre.
+uniform int u_ground = -1;
+uniform vec3 u_morph_min;
+uniform vec3 u_morph_max;
+uniform vec3 u_morph_centre;
+// 1: the last bounce also tests reflective billboards, and a hit ends the path with that
+// reflector's base colour (what the ray tracer shows at order K); 0: the paper's count, the
+// last bounce tests diffuse billboards only.
+uniform int u_last_bounce_reflective = 1;
+
+BillboardData billboard_data(int index) { return billboards[index]; }
+int billboard_list_entry(int position) { return billboard_entries[position]; }
+// The nearest texel's coverage: the alpha test needs no filtering, and a fetch is a fraction of
+// a filtered lookup's cost on llvmpipe.
+float billboard_coverage(BillboardData b, vec2 uv) {
+  ivec2 size = textureSize(u_billboard_surface, 0).xy;
+  ivec2 texel = clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1);
+  return texelFetch(u_billboard_surface, ivec3(texel, b.info.y), 0).a;
+}
+
+#include "methods/impostor/billboard_nearest_shared.h"
+
+// Once the hit distance of the ray leaving a reflective billboard is known, that reflector's
+// colour mix(base, tint * L, w) is settled into the running sum: it is linear in L, so no
+// stack of bounces is needed.
+void settle(int material, float cos_theta, float distance, inout vec3 sum, inout vec3 throughput) {
+  MaterialData m = materials[material];
+  float w = reflection_weight(m, cos_theta, distance);
+  sum += throughput * vec3(m.albedo) * (1.0f - w);
+  throughput *= vec3(m.tint) * w;
+}
+
+// Written for llvmpipe as much as for GPUs: llvmpipe runs both sides of every branch (masked),
+// so the loop only finds hits and the path's end is looked up once, after it: one cube-map
+// lookup and one billboard-texel lookup per pixel, whichever the path ended in.
+vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflector) {
+  int from = reflector - 1;
+  vec3 origin = position, dir = direction;
+  // The ray differential: one pixel's change of origin and direction.
+  vec3 dox = g_dPdx, doy = g_dPdy, ddx = g_dRdx, ddy = g_dRdy;
+  int order = frame.options.x;
+  float t_min = 1.0e-4f * max(length(frame.eye.xyz - position), 1.0f);
+  float first_distance = MISS_DISTANCE;
+  vec3 sum = vec3(0.0f), throughput = vec3(1.0f);
+  int pending = -1;  // the material of the reflective billboard the ray last bounced off
+  float pending_cos = 0.0f;
+  // Where the path ends: a billboard texel (layer >= 0, uv, footprint) or the environment
+  // along env_dir.
+  float end_layer = -1.0f;
+  int end_reflector = -1;  // the material of a reflector hit on the last bounce
+  vec2 end_uv = vec2(0.0f), end_dx = vec2(0.0f), end_dy = vec2(0.0f);
+  vec3 env_dir = dir;
+  bool ended_extra = false;  // the path ended at another impostor (impostor_extra_hit)
+  vec4 end_extra = vec4(0.0f);
+  for (int bounce = 1; bounce <= order; ++bounce) {
+    ivec4 range = billboard_ranges[from].range;
+    float t = MISS_DISTANCE;
+    vec2 uv = vec2(0.0f);
+    // The reflector's list holds its diffuse billboards, then the reflective ones right after
+    // (range.z == range.x + range.y): one loop tests both.
+    bool reflective = bounce < order || u_last_bounce_reflective != 0;
+    int hit = nearest_billboard(origin, dir, range.x, range.y + (reflective ? range.w : 0), t_min,
+                                t, uv);
+    vec4 extra_end = vec4(0.0f);
+    bool extra = impostor_extra_hit(origin, dir, from, t_min, t, dox, doy, ddx, ddy, extra_end);
+    if (extra) hit = -1;
+    // The ground box, if nearer than every billboard: the ground billboard through its floor,
+    // the morph on a wall, the environment through the open top.
+    int face = -1;
+    float t_box = u_ground >= 0 ? ray_box_exit(origin, dir, u_morph_min, u_morph_max, face) : -1.0f;
+    bool box = t_box >= 0.0f && t_box < t && face != MIRAGE_BOX_MAX_Y;
+    if (box && face == MIRAGE_BOX_MIN_Y) {
+      // The box's floor is the ground's plane: the quad's coordinates of the same point.
+      hit = u_ground;
+      extra = false;
+      t = t_box;
+      BillboardData g = billboards[hit];
+      vec3 local = origin + t_box * dir - g.corner.xyz;
+      uv = clamp(vec2(dot(local, g.edge_u.xyz) * g.edge_u.w, dot(local, g.edge_v.xyz) * g.edge_v.w),
+                 0.0f, 1.0f);
+      box = false;
+    }
+    if (box) extra = false;
+    float distance = box ? t_box : (hit >= 0 || extra ? t : MISS_DISTANCE);
+    if (pending >= 0) settle(pending, pending_cos, distance, sum, throughput);
+    else first_distance = distance;
+    env_dir = dir;
+    if (box) {
+      vec3 a = origin + t_box * dir;
+      env_dir = morph_direction(a, u_morph_centre, dir, a.y - u_morph_min.y,
+                                u_morph_max.y - u_morph_min.y);
+      break;
+    }
+    if (extra) {
+      end_extra = extra_end;
+      ended_extra = true;
+      break;
+    }
+    if (hit < 0) break;
+    BillboardData b = billboards[hit];
+    if (b.info.x == MIRAGE_BILLBOARD_DIFFUSE) {
+      end_layer = float(b.info.y);
+      end_uv = uv;
+      end_dx = billboard_uv_differential(b, dir, t, dox, ddx);
+      end_dy = billboard_uv_differential(b, dir, t, doy, ddy);
+      break;
+    }
+    if (bounce == order) {
+      end_reflector = b.info.w;  // no bounce left: the reflector's base colour
+      break;
+    }
+    // A reflective billboard: continue from its surface point, about its normal.
+    vec3 n = normalize(textureLod(u_billboard_surface, vec3(uv, float(b.info.y)), 0.0f).xyz);
+    vec3 p = textureLod(u_billboard_position, vec3(uv, b.corner.w), 0.0f).xyz;
+    if (dot(n, dir) > 0.0f) n = -n;
+    pending = b.info.w;
+    pending_cos = max(dot(n, -dir), 0.0f);
+    // The differential travels with the ray; a curved reflector spreads it further, which this
+    // first-order transfer ignores (the lookup is then sharper than the ray tracer's average).
+    dox += t * ddx;
+    doy += t * ddy;
+    origin = p + n * t_min;
+    dir = reflect(dir, n);
+    env_dir = dir;
+    from = b.info.z;
+  }
+  // The path's end, looked up once, at the level of the footprint (isotropic, as textureGrad
+  // on llvmpipe, at a fraction of its cost): a cube texel spans about (pi / 2) / size radians
+  // of direction, a billboard texel 1 / size of u and v. Without mip-mapping: level 0.
+  bool mip = frame.options.y != 0;
+  float env_size = float(textureSize(u_billboard_env, 0).x);
+  float env_footprint = max(length(ddx), length(ddy)) / length(env_dir) * env_size / 1.5707963f;
+  float env_lod = mip ? log2(max(env_footprint, 1.0e-8f)) : 0.0f;
+  vec3 env = textureLod(u_billboard_env, env_dir, env_lod).rgb;
+  float surface_size = float(textureSize(u_billboard_surface, 0).x);
+  float texel_footprint = max(length(end_dx), length(end_dy)) * surface_size;
+  float texel_lod = mip ? log2(max(texel_footprint, 1.0e-8f)) : 0.0f;
+  vec4 texel = textureLod(u_billboard_surface, vec3(end_uv, max(end_layer, 0.0f)), texel_lod);
+  // Premultiplied by coverage: dividing by alpha averages the covered texels only.
+  vec3 radiance = end_layer >= 0.0f ? texel.rgb / max(texel.a, 1.0e-4f) : env;
+  if (ended_extra) radiance = impostor_extra_radiance(end_extra);
+  if (end_reflector >= 0) radiance = reflector_base(materials[end_reflector]);
+  return vec4(sum + throughput * radiance, first_distance);
+}
