@@ -76,6 +76,18 @@ void Texture::uploadLayer(int level, int layer, GLenum format, GLenum type, cons
   glTextureSubImage3D(id(), level, 0, 0, layer, w, h, 1, format, type, pixels);
 }
 
+void Texture::uploadLayers(int level, int first_layer, int count, GLenum format, GLenum type,
+                           const void* pixels) {
+  int w = std::max(1, size_.x >> level), h = std::max(1, size_.y >> level);
+  glTextureSubImage3D(id(), level, 0, 0, first_layer, w, h, count, format, type, pixels);
+}
+
+void Texture::downloadLayer(int level, int layer, GLenum format, GLenum type, void* out,
+                            size_t bytes) const {
+  int w = std::max(1, size_.x >> level), h = std::max(1, size_.y >> level);
+  glGetTextureSubImage(id(), level, 0, 0, layer, w, h, 1, format, type, GLsizei(bytes), out);
+}
+
 void Texture::generateMipmaps() {
   glGenerateTextureMipmap(id());
 }

@@ -29,6 +29,12 @@ class Texture {
   void upload(int level, GLenum format, GLenum type, const void* pixels);
   // Uploads one layer (array layer, cube face, or layer-face = 6 * cube + face) of a level.
   void uploadLayer(int level, int layer, GLenum format, GLenum type, const void* pixels);
+  // Uploads `count` consecutive layers of a level from one block of memory.
+  void uploadLayers(int level, int first_layer, int count, GLenum format, GLenum type,
+                    const void* pixels);
+  // Reads one layer of a level back (`bytes`: the size of `out`, checked by GL).
+  void downloadLayer(int level, int layer, GLenum format, GLenum type, void* out,
+                     size_t bytes) const;
   void generateMipmaps();
   void setFilter(GLenum min_filter, GLenum mag_filter);
   void setWrap(GLenum wrap);

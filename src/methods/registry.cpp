@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "methods/billboard/billboard_method.h"
+#include "methods/depthmap/depthmap_method.h"
 #include "methods/envmap/envmap_method.h"
 #include "methods/method.h"
 #include "methods/none/none_method.h"
@@ -15,7 +16,8 @@ namespace mirage {
 const std::vector<MethodEntry>& methodRegistry() {
   static const std::vector<MethodEntry> registry = {
       noneMethodEntry(),      envmapInfiniteMethodEntry(), envmapMethodEntry(),
-      envmapBoxMethodEntry(), billboardMethodEntry(),      raytraceMethodEntry(),
+      envmapBoxMethodEntry(), billboardMethodEntry(),      depthmapMethodEntry(),
+      raytraceMethodEntry(),
   };
   return registry;
 }

@@ -77,6 +77,34 @@ Scene spheres9(const SceneOptions& options) {
   return s;
 }
 
+// The depth-map impostors' test scene: curved, concave diffuse objects (a teapot, a torus with a
+// hole to see through) reflected in a mirror sphere, on a checkerboard.
+Scene teapotSphere() {
+  Scene s;
+  s.description =
+      "a teapot and a standing torus reflected in a mirror sphere on a checkerboard (depth maps)";
+  addCheckerFloor(s, 16.0f);
+  int teapot = addMesh(s, procedural::teapotLike());
+  int purple = addMaterial(s, Material::diffuse("purple", {0.55f, 0.25f, 0.7f}));
+  addInstance(s, "teapot", teapot, purple, placeAt({-1.25f, 0.0f, 0.3f}, vec3(1.2f), rotationY(-30)));
+  int torus = addMesh(s, procedural::torus(0.45f, 0.16f, 64, 32));
+  int orange = addMaterial(s, Material::diffuse("orange", {0.95f, 0.5f, 0.1f}));
+  Transform standing = placeAt({1.3f, 0.62f, 0.2f});
+  // Standing on its rim, its hole facing the sphere.
+  standing.rotation = glm::angleAxis(glm::radians(35.0f), vec3(0, 1, 0));
+  addInstance(s, "torus", torus, orange, standing);
+  int sphere = addMesh(s, procedural::sphere(1.0f, 128, 64));
+  int mirror = addMaterial(s, Material::mirror("mirror"));
+  addInstance(s, "mirror-sphere", sphere, mirror, placeAt({0.0f, 1.0f, -0.8f}));
+  CameraDesc cam;
+  cam.name = "main";
+  cam.position = {0.0f, 1.7f, 4.6f};
+  cam.target = {0.0f, 0.8f, -0.3f};
+  cam.fov_y_degrees = 40.0f;
+  s.cameras.push_back(cam);
+  return s;
+}
+
 Scene mirrorRoom() {
   Scene s;
   s.description =
@@ -179,7 +207,8 @@ Transform placeAt(vec3 translation, vec3 scale, quat rotation) {
 const std::vector<BuiltinSceneInfo>& builtinScenes() {
   static const std::vector<BuiltinSceneInfo> scenes = [] {
     std::vector<BuiltinSceneInfo> v;
-    for (const char* name : {"sphere-over-checker", "spheres9", "mirror-room", "two-mirrors"})
+    for (const char* name :
+         {"sphere-over-checker", "spheres9", "mirror-room", "two-mirrors", "teapot-sphere"})
       v.push_back({name, makeBuiltinScene(name).description});
     return v;
   }();
@@ -188,7 +217,7 @@ const std::vector<BuiltinSceneInfo>& builtinScenes() {
 
 bool isBuiltinScene(const std::string& name) {
   return name == "sphere-over-checker" || name == "spheres9" || name == "mirror-room" ||
-         name == "two-mirrors";
+         name == "two-mirrors" || name == "teapot-sphere";
 }
 
 Scene makeBuiltinScene(const std::string& name, const SceneOptions& options) {
@@ -201,6 +230,8 @@ Scene makeBuiltinScene(const std::string& name, const SceneOptions& options) {
     s = mirrorRoom();
   else if (name == "two-mirrors")
     s = twoMirrors();
+  else if (name == "teapot-sphere")
+    s = teapotSphere();
   else
     throwInput("unknown built-in scene '{}'", name);
   if (options.reflectors >= 0 && name != "spheres9")

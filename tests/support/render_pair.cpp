@@ -7,17 +7,20 @@ namespace mirage::test {
 
 RenderPair renderWithTruth(const Scene& scene, const std::string& method, ivec2 size,
                            const FrameSettings& settings,
-                           const std::map<std::string, std::string>& params) {
+                           const std::map<std::string, std::string>& params, float time) {
   FrameRenderer renderer(scene, size);
   View view(scene.camera(), size);
   auto m = renderer.createMethod(method, params, settings);
-  renderer.render(*m, view, 0.0f, settings);
+  renderer.render(*m, view, time, settings);
   RenderedFrame frame = renderer.read();
   RayTracer tracer(scene, renderer.environment());
-  tracer.prepare(0.0f);
+  tracer.prepare(time);
   TraceResult truth = tracer.render(view, {settings.order, 1});
-  DisplaySettings display{1.0f, ToneMap::kAces};
-  return {toDisplay(frame.color, display), toDisplay(truth.color, display), frame.ids, truth.ids};
+  return {displayed(frame.color), displayed(truth.color), frame.ids, truth.ids};
+}
+
+Image displayed(const Image& linear) {
+  return toDisplay(linear, DisplaySettings{1.0f, ToneMap::kAces});
 }
 
 }  // namespace mirage::test

@@ -17,6 +17,10 @@ struct RenderPair {
 
 RenderPair renderWithTruth(const Scene& scene, const std::string& method, ivec2 size,
                            const FrameSettings& settings,
-                           const std::map<std::string, std::string>& params = {});
+                           const std::map<std::string, std::string>& params = {},
+                           float time = 0.0f);
+
+// A rendered frame's colour as the image tests compare it (exposure 1, ACES, sRGB).
+Image displayed(const Image& linear);
 
 }  // namespace mirage::test

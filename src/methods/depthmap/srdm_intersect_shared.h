@@ -65,18 +65,33 @@ SHARED_FN float srdm_row_crossing(int domain, int row, int m, vec2 from, vec2 to
 }
 
 // The first crossing of the depth map by a ray whose clipped projection runs from `from` to `to`
-// in (x, y, d) texel space: the domain in which the projection is closest to horizontal, the row
-// through its midpoint, then that row's crossing. Returns the fraction lambda of the way from
-// `from` to `to`, or -1 on a miss.
-SHARED_FN float srdm_intersect(vec3 from, vec3 to, int n, int w, int m) {
+// in (x, y, d) texel space, searched in the row that contains the projected ray's point at the
+// fraction `at` of the way, of the domain in which the projection is closest to horizontal.
+// Returns the fraction lambda of the way from `from` to `to`, or -1 on a miss.
+SHARED_FN float srdm_intersect_at(vec3 from, vec3 to, int n, int w, int m, float at) {
   vec2 along = vec2(to.x - from.x, to.y - from.y);
   int domain = dot(along, along) > 1.0e-12f ? srdm_domain_of(along, n) : 0;
   float theta = srdm_theta(domain, n);
   vec2 a = srdm_to_domain(vec2(from.x, from.y), theta, float(w));
   vec2 b = srdm_to_domain(vec2(to.x, to.y), theta, float(w));
-  int row = srdm_row_of(0.5f * (a.y + b.y), theta, w);
+  int row = srdm_row_of(a.y + (b.y - a.y) * at, theta, w);
   if (row < 0) return -1.0f;
   return srdm_row_crossing(domain, row, m, vec2(a.x, from.z), vec2(b.x, to.z));
+}
+
+// The paper's search (§4.3 steps 4-5): the row through the projected ray's midpoint.
+SHARED_FN float srdm_intersect(vec3 from, vec3 to, int n, int w, int m) {
+  return srdm_intersect_at(from, to, n, w, m, 0.5f);
+}
+
+// Two rows (our answer to the paper's §5.2 "lookup the two best rows"): the row through the
+// midpoint stands for the whole ray, and is off the ray by up to half the ray's length times
+// the angle to the nearest domain; where it finds a hit, the row through that hit is the best
+// row there, so its answer replaces the first one's.
+SHARED_FN float srdm_intersect_two_rows(vec3 from, vec3 to, int n, int w, int m) {
+  float first = srdm_intersect_at(from, to, n, w, m, 0.5f);
+  if (first < 0.0f) return first;
+  return srdm_intersect_at(from, to, n, w, m, first);
 }
 
 SHARED_END

@@ -1,0 +1,92 @@
+// Method `depthmap`: the impostor paper's depth-map impostors (§4.3) inside its order-K pixel
+// algorithm (methods/impostor/impostor_trace.glsl). Per bounce, each depth-mapped object is
+// tested through the one of its maps that looks most along the ray: the ray is clipped to that
+// camera's frustum, projected into texel space, and searched in one SRDM row (or two, or the
+// full map with --depthmap-search linear); a hit nearer than every billboard ends the path with
+// the map's colour at the hit, filtered over the ray differential's footprint.
+#include "render/shaders/reflector.glsl"
+#include "methods/depthmap/depthmap_shared.h"
+
+layout(std430, binding = MIRAGE_BIND_DEPTHMAPS) readonly buffer DepthMapBlock {
+  DepthMapData depthmaps[];
+};
+layout(binding = MIRAGE_UNIT_DEPTHMAP_COLOR) uniform sampler2DArray u_depthmap_color;
+layout(binding = MIRAGE_UNIT_DEPTHMAP_SRDM) uniform sampler2DArray u_srdm;
+layout(binding = MIRAGE_UNIT_DEPTHMAP_DEPTH) uniform sampler2DArray u_depthmap_depth;
+uniform int u_depthmap_count = 0;
+uniform int u_depthmap_size = 256;
+uniform int u_srdm_n = 60;
+uniform int u_srdm_m = 8;
+uniform int u_srdm_rows = 1;
+uniform int u_depthmap_search = MIRAGE_DEPTHMAP_SEARCH_SRDM;
+
+// The SRDM layer of domain 0 of the map being searched.
+int g_srdm_base = 0;
+vec4 srdm_point_pair(int domain, int row, int pair) {
+  return texelFetch(u_srdm, ivec3(pair, row, g_srdm_base + domain), 0);
+}
+#include "methods/depthmap/srdm_intersect_shared.h"
+
+float depthmap_depth(int layer, int x, int y) {
+  return texelFetch(u_depthmap_depth, ivec3(x, y, layer), 0).r;
+}
+#include "methods/depthmap/depthmap_march_shared.h"
+
+bool impostor_extra_hit(vec3 origin, vec3 dir, int from, float t_min, inout float t_best,
+                        vec3 dox, vec3 doy, vec3 ddx, vec3 ddy, out vec4 end) {
+  end = vec4(0.0f);
+  bool found = false;
+  float w = float(u_depthmap_size);
+  for (int i = 0; i < u_depthmap_count;) {
+    // The object's maps follow each other; the first holds their count.
+    int count = max(depthmaps[i].info.w, 1);
+    int best = i;
+    float best_cos = -2.0f;
+    for (int k = i; k < i + count; ++k) {
+      float c = dot(dir, depthmaps[k].forward.xyz);
+      if (c > best_cos) {
+        best_cos = c;
+        best = k;
+      }
+    }
+    i += count;
+    DepthMapData map = depthmaps[best];
+    float t0 = t_min, t1 = t_best;
+    if (!depthmap_clip(map.view_proj, origin, dir, t0, t1)) continue;
+    vec4 c0 = map.view_proj * vec4(origin + t0 * dir, 1.0f);
+    vec4 c1 = map.view_proj * vec4(origin + t1 * dir, 1.0f);
+    vec3 p0 = depthmap_texel_point(c0, w), p1 = depthmap_texel_point(c1, w);
+    float lambda;
+    if (u_depthmap_search == MIRAGE_DEPTHMAP_SEARCH_LINEAR) {
+      int examined;
+      lambda = depthmap_march(map.info.x, u_depthmap_size, p0, p1, examined);
+    } else {
+      g_srdm_base = map.info.y;
+      lambda = u_srdm_rows == 2 ? srdm_intersect_two_rows(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m)
+                                : srdm_intersect(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
+    }
+    if (lambda < 0.0f) continue;
+    float mu = depthmap_unproject_fraction(lambda, c0.w, c1.w);
+    float t = t0 + mu * (t1 - t0);
+    if (t >= t_best) continue;
+    t_best = t;
+    found = true;
+    vec3 hit = p0 + (p1 - p0) * lambda;
+    // The footprint: the ray differential at the hit against a texel's world size there (clip w
+    // is the eye depth along the camera's axis).
+    float eye_depth = mix(c0.w, c1.w, mu);
+    float texel = map.forward.w * max(eye_depth, 1.0e-6f);
+    float spread = max(length(dox + t * ddx), length(doy + t * ddy));
+    end = vec4(hit.x / w, hit.y / w, float(map.info.x), log2(max(spread / texel, 1.0e-8f)));
+  }
+  return found;
+}
+
+vec3 impostor_extra_radiance(vec4 end) {
+  float lod = frame.options.y != 0 ? end.w : 0.0f;
+  vec4 texel = textureLod(u_depthmap_color, end.xyz, lod);
+  // Premultiplied by coverage: dividing by alpha averages the covered texels only.
+  return texel.rgb / max(texel.a, 1.0e-4f);
+}
+
+#include "methods/impostor/impostor_trace.glsl"

@@ -1,0 +1,126 @@
+#include "methods/depthmap/depthmap_capture.h"
+
+#include "core/error.h"
+#include "core/timer.h"
+
+namespace mirage {
+
+namespace {
+
+bool sameSpec(const DepthMapSpec& a, const DepthMapSpec& b) {
+  return a.instance == b.instance && a.centre == b.centre && a.from == b.from && a.up == b.up &&
+         a.radius == b.radius;
+}
+
+}  // namespace
+
+DepthMapCapture::DepthMapCapture(const DepthMapOptions& options, const SrdmSettings& srdm)
+    : options_(options),
+      srdm_settings_(srdm),
+      scratch_depth_(gpu::Texture::create2D(GL_DEPTH_COMPONENT32F, options.size, options.size)),
+      program_(gpu::Program::graphics("render/shaders/scene.vert",
+                                      "methods/impostor/capture_diffuse.frag")) {
+  if (srdm.points > options.size)
+    throwInput("--srdm-m {} is out of range (allowed: 2..{}, at most --depthmap-size)", srdm.points,
+               std::min(options.size, 256));
+}
+
+void DepthMapCapture::allocate(int maps) {
+  const int count = std::max(maps, 1);
+  if (colors_.layers() == count) return;
+  GLint max_layers = 0;
+  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_layers);
+  if (count * srdm_settings_.domains > max_layers)
+    throwInput(
+        "--srdm-n {} with {} depth maps needs {} texture layers; this OpenGL driver has {} "
+        "(allowed: --srdm-n up to {})",
+        srdm_settings_.domains, count, count * srdm_settings_.domains, max_layers,
+        max_layers / count);
+  const int w = options_.size;
+  colors_ = gpu::Texture::create2DArray(GL_RGBA16F, w, w, count, gpu::Texture::fullMipLevels(w));
+  depths_ = gpu::Texture::create2DArray(GL_DEPTH_COMPONENT32F, w, w, count, 1);
+  const int pairs = (srdm_settings_.points + 1) / 2;
+  srdms_ = gpu::Texture::create2DArray(GL_RGBA32F, pairs, w, count * srdm_settings_.domains, 1);
+  color_keys_.assign(size_t(count), ColorKey{});
+  color_valid_.assign(size_t(count), false);
+  depth_valid_.assign(size_t(count), false);
+  built_for_.assign(size_t(count), DepthMapSpec{});
+  maps_.assign(size_t(count), DepthMap{});
+  srdm_cpu_.assign(size_t(count), Srdm{});
+}
+
+int DepthMapCapture::update(GpuScene& gpu, ScenePasses& passes,
+                            const std::vector<DepthMapSpec>& specs, const FrameSettings& settings) {
+  allocate(int(specs.size()));
+  const Light& light = gpu.scene().light;
+  int colour_captures = 0;
+  for (size_t i = 0; i < specs.size(); ++i) {
+    const DepthMapSpec& spec = specs[i];
+    const mat4& model = gpu.instanceMatrix(spec.instance);
+    // The light as the object sees it: a translation changes nothing, a rotation may.
+    const vec3 local_light = glm::normalize(glm::inverse(mat3(model)) * light.direction);
+    const ColorKey key{local_light, light.color, light.ambient};
+    const bool depth_ok = depth_valid_[i] && sameSpec(built_for_[i], spec);
+    const bool colour_ok = depth_ok && color_valid_[i] && color_keys_[i] == key;
+    if (colour_ok) continue;
+    render(gpu, passes, spec, int(i), !depth_ok, settings);
+    color_keys_[i] = key;
+    color_valid_[i] = true;
+    ++colour_captures;
+    if (!depth_ok) {
+      build(int(i), depthMapView(spec, model, options_));
+      built_for_[i] = spec;
+      depth_valid_[i] = true;
+    }
+  }
+  if (colour_captures > 0) colors_.generateMipmaps();
+  color_captures_ += colour_captures;
+  return colour_captures;
+}
+
+void DepthMapCapture::render(GpuScene& gpu, ScenePasses& passes, const DepthMapSpec& spec,
+                             int layer, bool with_depth, const FrameSettings& settings) {
+  // A colour-only capture renders against a scratch depth buffer, leaving the depth map (and
+  // the SRDMs built from it) as they are.
+  fbo_.attachColor(0, colors_, 0, layer);
+  if (with_depth)
+    fbo_.attachDepth(depths_, 0, layer);
+  else
+    fbo_.attachDepth(scratch_depth_);
+  fbo_.setDrawBuffers(1);
+  fbo_.checkComplete("depth-map capture");
+  fbo_.bind();
+  glViewport(0, 0, options_.size, options_.size);
+  const float clear[4] = {0, 0, 0, 0};
+  const float far_depth = 1.0f;
+  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, clear);
+  glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &far_depth);
+  passes.begin(depthMapView(spec, gpu.instanceMatrix(spec.instance), options_), settings);
+  program_.use();
+  gpu.draw(spec.instance);
+  if (with_depth) ++depth_captures_;
+}
+
+void DepthMapCapture::build(int layer, const View& view) {
+  Stopwatch watch;
+  DepthMap& map = maps_[size_t(layer)];
+  map.size = options_.size;
+  map.near = view.nearPlane();
+  map.far = view.farPlane();
+  map.depth.resize(size_t(map.size) * size_t(map.size));
+  depths_.downloadLayer(0, layer, GL_DEPTH_COMPONENT, GL_FLOAT, map.depth.data(),
+                        map.depth.size() * sizeof(float));
+  Srdm& srdm = srdm_cpu_[size_t(layer)];
+  srdm = buildSrdm(map, srdm_settings_);
+  srdms_.uploadLayers(0, layer * srdm.domains, srdm.domains, GL_RGBA, GL_FLOAT, srdm.texels.data());
+  last_build_ms_ = watch.ms();
+  ++srdm_builds_;
+}
+
+int DepthMapCapture::droppedSamples() const {
+  int dropped = 0;
+  for (const Srdm& s : srdm_cpu_) dropped += s.dropped_samples;
+  return dropped;
+}
+
+}  // namespace mirage

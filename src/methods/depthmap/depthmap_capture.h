@@ -1,0 +1,67 @@
+// Renders the depth maps of a set of DepthMapSpecs (colour + GL depth, the object alone through
+// its camera) and builds their SRDMs, keeping each up to date by key: the depth and the SRDMs
+// depend only on the camera in the object's space and the settings, so rigid motion rebuilds
+// nothing; the colour depends on the light as the object sees it (its direction in the object's
+// space, colour, ambient), so a light change — or a rotation relative to the light — re-captures
+// the colour alone.
+#pragma once
+
+#include <vector>
+
+#include "gpu/framebuffer.h"
+#include "gpu/program.h"
+#include "gpu/texture.h"
+#include "methods/depthmap/depthmap_set.h"
+#include "methods/depthmap/srdm.h"
+#include "render/gpu_scene.h"
+#include "render/scene_passes.h"
+
+namespace mirage {
+
+class DepthMapCapture {
+ public:
+  // Needs a current OpenGL 4.5 context. Throws InputError for settings out of range.
+  DepthMapCapture(const DepthMapOptions& options, const SrdmSettings& srdm);
+
+  // Captures and builds what changed; returns the number of colour captures made.
+  int update(GpuScene& gpu, ScenePasses& passes, const std::vector<DepthMapSpec>& specs,
+             const FrameSettings& settings);
+
+  const gpu::Texture& colors() const { return colors_; }  // RGBA16F, premultiplied, mip-mapped
+  const gpu::Texture& depths() const { return depths_; }  // DEPTH_COMPONENT32F
+  const gpu::Texture& srdms() const { return srdms_; }    // RGBA32F, maps x n layers
+  // The depth maps as last read back (CPU builder) and their SRDMs, per map.
+  const std::vector<DepthMap>& depthMaps() const { return maps_; }
+  const std::vector<Srdm>& cpuSrdms() const { return srdm_cpu_; }
+
+  long colorCaptures() const { return color_captures_; }
+  long depthCaptures() const { return depth_captures_; }
+  long srdmBuilds() const { return srdm_builds_; }
+  double lastBuildMs() const { return last_build_ms_; }
+  int droppedSamples() const;
+
+ private:
+  struct ColorKey {
+    vec3 light_dir{0.0f}, light_color{0.0f}, ambient{0.0f};
+    bool operator==(const ColorKey&) const = default;
+  };
+  void allocate(int maps);
+  void render(GpuScene& gpu, ScenePasses& passes, const DepthMapSpec& spec, int layer,
+              bool with_depth, const FrameSettings& settings);
+  void build(int layer, const View& view);
+
+  DepthMapOptions options_;
+  SrdmSettings srdm_settings_;
+  gpu::Texture colors_, depths_, srdms_, scratch_depth_;
+  gpu::Framebuffer fbo_;
+  gpu::Program program_;
+  std::vector<ColorKey> color_keys_;
+  std::vector<bool> color_valid_, depth_valid_;
+  std::vector<DepthMapSpec> built_for_;
+  std::vector<DepthMap> maps_;
+  std::vector<Srdm> srdm_cpu_;
+  long color_captures_ = 0, depth_captures_ = 0, srdm_builds_ = 0;
+  double last_build_ms_ = 0.0;
+};
+
+}  // namespace mirage

@@ -1,0 +1,171 @@
+#include "methods/depthmap/depthmap_method.h"
+
+#include <span>
+
+#include "methods/depthmap/depthmap_capture.h"
+#include "methods/depthmap/depthmap_shared.h"
+#include "methods/impostor/billboard_stage.h"
+
+namespace mirage {
+
+namespace {
+
+DepthMapOptions depthMapOptions(const ParamValues& params) {
+  DepthMapOptions o;
+  o.size = params.integer("depthmap-size");
+  o.fov_degrees = float(params.real("depthmap-fov"));
+  o.maps = params.integer("depthmap-maps");
+  return o;
+}
+
+SrdmSettings srdmSettings(const ParamValues& params) {
+  SrdmSettings s;
+  s.domains = params.integer("srdm-n");
+  s.points = params.integer("srdm-m");
+  s.simplifier = parseSrdmSimplifier(params.text("srdm-simplify"));
+  return s;
+}
+
+class DepthMapMethod final : public Method {
+ public:
+  explicit DepthMapMethod(const MethodSetup& setup)
+      : info_(setup.info),
+        options_(depthMapOptions(setup.params)),
+        srdm_(srdmSettings(setup.params)),
+        specs_(placeDepthMaps(setup.gpu.scene(), options_)),
+        stage_(stageOptions(setup.params, specs_)),
+        capture_(options_, srdm_),
+        last_bounce_reflective_(setup.params.text("last-bounce") == "all"),
+        linear_(setup.params.text("depthmap-search") == "linear"),
+        rows_(setup.params.integer("srdm-rows")),
+        program_(
+            gpu::Program::graphics("render/shaders/scene.vert", "methods/depthmap/depthmap.frag")),
+        base_program_(
+            gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")) {}
+
+  const MethodInfo& info() const override { return info_; }
+
+  void update(FrameContext& frame) override {
+    stage_.update(frame);
+    GpuScene& gpu = frame.gpu;
+    if (updated_ && updated_version_ == gpu.version()) {
+      last_captures_ = 0;
+      return;
+    }
+    last_captures_ = capture_.update(gpu, frame.passes, specs_, frame.settings);
+    // The cameras follow their objects every time the scene moves; nothing is rebuilt for it.
+    std::vector<shading::DepthMapData> data;
+    for (size_t i = 0; i < specs_.size(); ++i) {
+      const DepthMapSpec& s = specs_[i];
+      const View view = depthMapView(s, gpu.instanceMatrix(s.instance), options_);
+      shading::DepthMapData d{};
+      d.view_proj = view.viewProjection();
+      d.forward = vec4(view.forward(), 2.0f * std::tan(glm::radians(options_.fov_degrees) * 0.5f) /
+                                           float(options_.size));
+      int count = 0;
+      if (s.index == 0)
+        for (size_t k = i; k < specs_.size() && specs_[k].instance == s.instance; ++k) ++count;
+      d.info = ivec4(int(i), int(i) * srdm_.domains, s.instance, count);
+      data.push_back(d);
+    }
+    if (data.empty()) data.push_back(shading::DepthMapData{});
+    maps_.upload(std::span<const shading::DepthMapData>(data));
+    updated_ = true;
+    updated_version_ = gpu.version();
+  }
+
+  void render(FrameContext& frame) override {
+    frame.passes.drawDirect();
+    frame.beginPart(gpu::Part::kReflect);
+    if (frame.settings.order == 0 || stage_.empty()) {
+      frame.passes.drawReflectors(base_program_);
+      return;
+    }
+    stage_.bind(program_, frame.gpu);
+    maps_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_DEPTHMAPS);
+    capture_.colors().bind(MIRAGE_UNIT_DEPTHMAP_COLOR);
+    capture_.srdms().bind(MIRAGE_UNIT_DEPTHMAP_SRDM);
+    capture_.depths().bind(MIRAGE_UNIT_DEPTHMAP_DEPTH);
+    program_.set("u_last_bounce_reflective", last_bounce_reflective_ ? 1 : 0);
+    program_.set("u_depthmap_count", int(specs_.size()));
+    program_.set("u_depthmap_size", options_.size);
+    program_.set("u_srdm_n", srdm_.domains);
+    program_.set("u_srdm_m", srdm_.points);
+    program_.set("u_srdm_rows", rows_);
+    program_.set("u_depthmap_search",
+                 linear_ ? MIRAGE_DEPTHMAP_SEARCH_LINEAR : MIRAGE_DEPTHMAP_SEARCH_SRDM);
+    drawReflectorsOnce(frame.passes, base_program_, program_);
+  }
+
+  std::map<std::string, double> stats() const override {
+    std::map<std::string, double> out = stage_.stats();
+    out["depth_maps"] = double(specs_.size());
+    out["depthmap_color_captures"] = double(capture_.colorCaptures());
+    out["depthmap_color_captures_last_update"] = double(last_captures_);
+    out["depthmap_depth_captures"] = double(capture_.depthCaptures());
+    out["srdm_builds"] = double(capture_.srdmBuilds());
+    out["srdm_last_build_ms"] = capture_.lastBuildMs();
+    out["srdm_dropped_samples"] = double(capture_.droppedSamples());
+    return out;
+  }
+
+ private:
+  static BillboardStageOptions stageOptions(const ParamValues& params,
+                                            const std::vector<DepthMapSpec>& specs) {
+    BillboardStageOptions o = billboardStageOptions(params);
+    o.set.excluded = depthMappedInstances(specs);
+    return o;
+  }
+
+  const MethodInfo& info_;
+  DepthMapOptions options_;
+  SrdmSettings srdm_;
+  std::vector<DepthMapSpec> specs_;
+  BillboardStage stage_;
+  DepthMapCapture capture_;
+  bool last_bounce_reflective_, linear_;
+  int rows_;
+  gpu::Program program_, base_program_;
+  gpu::Buffer maps_;
+  int last_captures_ = 0;
+  bool updated_ = false;
+  uint64_t updated_version_ = 0;
+};
+
+}  // namespace
+
+MethodEntry depthmapMethodEntry() {
+  MethodEntry entry;
+  entry.info.name = "depthmap";
+  entry.info.description =
+      "depth-map impostors searched through simplified rotated depth maps (impostor paper, §4), "
+      "with billboards for the rest";
+  entry.info.min_order = 1;
+  entry.info.params = {
+      ParamSpec::integer("depthmap-size", 16, 2048, 256,
+                         "side w of each depth map (colour and depth), in texels"),
+      ParamSpec::real("depthmap-fov", 1.0, 90.0, 20.0,
+                      "field of view of the depth-map cameras, in degrees"),
+      ParamSpec::integer("depthmap-maps", 1, 6, 1,
+                         "depth maps per object: 1 from the reflectors, 2 adds the opposite "
+                         "side, up to 6 around; a ray uses the one looking most along it"),
+      ParamSpec::integer("srdm-n", 1, 1024, 60, "rotated domains n (angular step 180/n degrees)"),
+      ParamSpec::integer("srdm-m", 2, 256, 8,
+                         "points m per simplified row (at most --depthmap-size)"),
+      ParamSpec::choice("srdm-simplify", {"greedy", "fit"}, "greedy",
+                        "row simplifier: the paper's greedy refinement, or its knots with "
+                        "depths fitted by least squares"),
+      ParamSpec::choice("depthmap-search", {"srdm", "linear"}, "srdm",
+                        "ray-depth-map intersection: one SRDM row, or a walk of the full map "
+                        "along the projected ray (the baseline)"),
+      ParamSpec::integer("srdm-rows", 1, 2, 1,
+                         "SRDM rows per search: 1 (the paper: the row through the projected "
+                         "ray's midpoint), 2 (then the row through that row's hit)")};
+  for (const ParamSpec& p : billboardStageParams()) entry.info.params.push_back(p);
+  entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
+    return std::make_unique<DepthMapMethod>(setup);
+  };
+  return entry;
+}
+
+}  // namespace mirage

@@ -1,0 +1,44 @@
+// Which objects get depth-map impostors and where their cameras stand (the impostor paper, §4.1
+// and §4.3). Every non-planar diffuse object gets `maps` depth maps (planar ones stay exact
+// billboards). The cameras are fixed in the object's space — placed once, from the scene at
+// time 0 — and move rigidly with it, so that an object's depth maps and SRDMs never need a
+// rebuild when it moves (§4.3: "the DM camera is simply transformed").
+//
+// Map 0 looks at the object from the reflectors' centroid; map 1 from the opposite side (the
+// front map the paper's swapping bunnies need); maps 2-5 from the four directions
+// perpendicular to that axis. A ray uses the map whose camera looks most nearly along it.
+#pragma once
+
+#include <vector>
+
+#include "core/camera.h"
+#include "scene/scene.h"
+
+namespace mirage {
+
+struct DepthMapOptions {
+  int size = 256;             // w: texels per side
+  float fov_degrees = 20.0f;  // the depth-map camera's field of view
+  int maps = 1;               // depth maps per object (1..6)
+};
+
+struct DepthMapSpec {
+  int instance = -1;
+  int index = 0;  // among its object's maps
+  // The camera in the object's space: it frames the mesh's bounding sphere (centre, radius)
+  // from `from` (unit, from the centre towards the camera), with `up`.
+  vec3 centre{0.0f}, from{0.0f, 0.0f, 1.0f}, up{0.0f, 1.0f, 0.0f};
+  float radius = 1.0f;
+};
+
+// The non-planar diffuse instances, each with options.maps specs (consecutive).
+std::vector<DepthMapSpec> placeDepthMaps(const Scene& scene, const DepthMapOptions& options);
+
+// The instances that have depth maps, once each.
+std::vector<int> depthMappedInstances(const std::vector<DepthMapSpec>& specs);
+
+// The camera of `spec` with its object placed by `model`: near and far planes enclose the
+// bounding sphere.
+View depthMapView(const DepthMapSpec& spec, const mat4& model, const DepthMapOptions& options);
+
+}  // namespace mirage
