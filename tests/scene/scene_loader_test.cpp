@@ -63,7 +63,7 @@ class AssetDir {
   fs::path dir_;
 };
 
-const char* kAssetScenes[] = {"teapots4", "bunny", "dragon"};
+const char* kAssetScenes[] = {"teapots4", "bunny", "bunnies", "dragon"};
 
 std::optional<SceneListing> findListing(const std::string& name) {
   for (const SceneListing& l : listScenes())
