@@ -22,14 +22,7 @@ class BillboardMethod final : public Method {
   void update(FrameContext& frame) override { stage_.update(frame); }
 
   void render(FrameContext& frame) override {
-    frame.passes.drawDirect();
-    frame.beginPart(gpu::Part::kReflect);
-    if (frame.settings.order == 0 || stage_.empty()) {
-      frame.passes.drawReflectors(base_program_);
-      return;
-    }
-    stage_.bind(program_, frame.gpu);
-    program_.set("u_last_bounce_reflective", last_bounce_reflective_ ? 1 : 0);
+    if (!stage_.beginFrame(frame, program_, base_program_, last_bounce_reflective_)) return;
     drawReflectorsOnce(frame.passes, base_program_, program_);
   }
 

@@ -75,18 +75,11 @@ class DepthMapMethod final : public Method {
   }
 
   void render(FrameContext& frame) override {
-    frame.passes.drawDirect();
-    frame.beginPart(gpu::Part::kReflect);
-    if (frame.settings.order == 0 || stage_.empty()) {
-      frame.passes.drawReflectors(base_program_);
-      return;
-    }
-    stage_.bind(program_, frame.gpu);
+    if (!stage_.beginFrame(frame, program_, base_program_, last_bounce_reflective_)) return;
     maps_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_DEPTHMAPS);
     capture_.colors().bind(MIRAGE_UNIT_DEPTHMAP_COLOR);
     capture_.srdms().bind(MIRAGE_UNIT_DEPTHMAP_SRDM);
     capture_.depths().bind(MIRAGE_UNIT_DEPTHMAP_DEPTH);
-    program_.set("u_last_bounce_reflective", last_bounce_reflective_ ? 1 : 0);
     program_.set("u_depthmap_count", int(specs_.size()));
     program_.set("u_depthmap_size", options_.size);
     program_.set("u_srdm_n", srdm_.domains);

@@ -90,6 +90,20 @@ void BillboardStage::bind(const gpu::Program& program, const GpuScene& gpu) cons
   }
 }
 
+bool BillboardStage::beginFrame(FrameContext& frame, const gpu::Program& program,
+                                const gpu::Program& base_program,
+                                bool last_bounce_reflective) const {
+  frame.passes.drawDirect();
+  frame.beginPart(gpu::Part::kReflect);
+  if (frame.settings.order == 0 || empty()) {
+    frame.passes.drawReflectors(base_program);
+    return false;
+  }
+  bind(program, frame.gpu);
+  program.set("u_last_bounce_reflective", last_bounce_reflective ? 1 : 0);
+  return true;
+}
+
 std::map<std::string, double> BillboardStage::stats() const {
   int diffuse = 0, reflective = 0;
   for (const BillboardSpec& b : set_.billboards)

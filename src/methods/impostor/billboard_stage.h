@@ -44,6 +44,12 @@ class BillboardStage {
   void update(FrameContext& frame);
   // Binds the buffers, textures and morph uniforms that impostor_trace.glsl reads.
   void bind(const gpu::Program& program, const GpuScene& gpu) const;
+  // An impostor method's frame up to its reflections: the direct part; then, when there is
+  // something to trace (order >= 1 and reflectors), binds the stage and the last-bounce rule
+  // for `program` and returns true; otherwise draws the reflectors with `base_program` (their
+  // base colour) and returns false.
+  bool beginFrame(FrameContext& frame, const gpu::Program& program,
+                  const gpu::Program& base_program, bool last_bounce_reflective) const;
   bool empty() const { return set_.ranges.empty(); }
   const BillboardSet& set() const { return set_; }
   std::map<std::string, double> stats() const;
