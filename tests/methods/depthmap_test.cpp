@@ -63,8 +63,12 @@ TEST(DepthMapGeometry, ClipKeepsExactlyThePartInsideTheFrustum) {
       ASSERT_TRUE(insideClip(vp, origin + dir * t, 1e-3f)) << "ray " << i << " at " << t;
     }
     const float eps = 1e-3f * (1.0f + t1);
-    if (t0 > eps) EXPECT_FALSE(insideClip(vp, origin + dir * (t0 - eps), -1e-4f));
-    if (t1 < 100.0f - eps) EXPECT_FALSE(insideClip(vp, origin + dir * (t1 + eps), -1e-4f));
+    if (t0 > eps) {
+      EXPECT_FALSE(insideClip(vp, origin + dir * (t0 - eps), -1e-4f));
+    }
+    if (t1 < 100.0f - eps) {
+      EXPECT_FALSE(insideClip(vp, origin + dir * (t1 + eps), -1e-4f));
+    }
   }
   EXPECT_GT(clipped, 200);
 }
