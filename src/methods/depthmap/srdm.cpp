@@ -10,6 +10,7 @@
 #include <tbb/parallel_for.h>
 
 #include "core/error.h"
+#include "methods/depthmap/srdm_build_shared.h"
 #include "methods/depthmap/srdm_shared.h"
 
 namespace mirage {
@@ -41,37 +42,21 @@ void sampleRow(const DepthMap& map, const ivec4& box, int domain, int domains, i
   const float w = float(map.size);
   const float theta = sh::srdm_theta(domain, domains);
   const float extent = sh::srdm_extent(theta, w);
-  const int count = std::max(int(std::ceil(extent - 1e-4f)), 1);
+  const int count = sh::srdm_sample_count(extent);
   out.spacing = extent / float(count);
   out.s.clear();
   out.d.clear();
+  // The shared row arithmetic (srdm_build_shared.h), as the GPU builder runs it.
   const vec2 a(std::cos(theta), std::sin(theta));
-  const float t = sh::srdm_row_t(row, theta, map.size);
-  const vec2 start = sh::srdm_from_domain(vec2(0.0f, t), theta, w);
-  // Only the part of the row over the foreground's bounding box (slabs): the rest is background.
-  float s_in = 0.0f, s_out = extent;
-  for (int axis = 0; axis < 2; ++axis) {
-    const float lo = float(box[axis]), hi = float(box[axis + 2]);
-    if (std::abs(a[axis]) < 1e-7f) {
-      if (start[axis] < lo || start[axis] > hi) s_out = -1.0f;
-      continue;
-    }
-    float t0 = (lo - start[axis]) / a[axis], t1 = (hi - start[axis]) / a[axis];
-    if (t0 > t1) std::swap(t0, t1);
-    s_in = std::max(s_in, t0);
-    s_out = std::min(s_out, t1);
-  }
-  if (s_in > s_out) return;
-  const int k0 = std::max(int(std::floor(s_in / out.spacing - 0.5f)), 0);
-  const int k1 = std::min(int(std::ceil(s_out / out.spacing - 0.5f)), count - 1);
-  for (int k = k0; k <= k1; ++k) {
-    const float s = (float(k) + 0.5f) * out.spacing;
-    const vec2 p = start + s * a;
-    // Nearest texel: depth is never blended across a silhouette.
-    const int x = int(std::floor(p.x)), y = int(std::floor(p.y));
-    const bool inside = x >= 0 && y >= 0 && x < map.size && y < map.size;
+  const vec2 start = sh::srdm_row_start(a, extent, row, w);
+  // Only the part of the row over the foreground's bounding box: the rest is background.
+  const ivec2 range = sh::srdm_row_range(start, a, box, extent, out.spacing, count);
+  for (int k = range.x; k <= range.y; ++k) {
+    const float s = sh::srdm_sample_s(k, out.spacing);
+    const ivec2 p = sh::srdm_sample_texel(start, a, s);
+    const bool inside = p.x >= 0 && p.y >= 0 && p.x < map.size && p.y < map.size;
     out.s.push_back(s);
-    out.d.push_back(inside ? std::min(map.at(x, y), 1.0f) : 1.0f);
+    out.d.push_back(inside ? std::min(map.at(p.x, p.y), 1.0f) : 1.0f);
   }
 }
 
@@ -82,9 +67,7 @@ namespace {
 struct RelativeZ {
   float k;
   explicit RelativeZ(const DepthMap& map) : k((map.far - map.near) / map.far) {}
-  float operator()(float d_approx, float d) const {
-    return k * std::abs(d_approx - d) / std::max(1.0f - k * d_approx, 1e-12f);
-  }
+  float operator()(float d_approx, float d) const { return sh::srdm_relative_z(k, d_approx, d); }
 };
 
 struct Span {
@@ -129,7 +112,10 @@ struct Knot {
 struct Segment {
   float error;
   int left, worst;  // the knot starting the segment; the sample of largest error
-  bool operator<(const Segment& o) const { return error < o.error; }
+  // The queue's order (shared with the GPU builder): ties go to the earlier worst sample.
+  bool operator<(const Segment& o) const {
+    return sh::srdm_segment_above(o.error, o.worst, error, worst);
+  }
 };
 
 Segment worstOfSegment(const std::vector<Knot>& knots, int left, const RowSamples& row,
@@ -137,10 +123,9 @@ Segment worstOfSegment(const std::vector<Knot>& knots, int left, const RowSample
   const Knot& a = knots[size_t(left)];
   const Knot& b = knots[size_t(a.next)];
   Segment seg{0.0f, left, -1};
-  const float inv = 1.0f / (b.s - a.s);
+  const float inv = sh::srdm_segment_inverse(a.s, b.s);
   for (int k = a.sample; k <= b.sample; ++k) {
-    const float s = row.s[size_t(k)];
-    const float approx = a.d + (b.d - a.d) * (s - a.s) * inv;
+    const float approx = sh::srdm_segment_depth(a.s, a.d, b.d, inv, row.s[size_t(k)]);
     const float e = rel(approx, row.d[size_t(k)]);
     if (e > seg.error) {
       seg.error = e;
@@ -287,12 +272,16 @@ RowPolyline decodeRow(const Srdm& srdm, int domain, int row) {
   return out;
 }
 
-Srdm buildSrdm(const DepthMap& map, const SrdmSettings& settings) {
+void checkSrdmSettings(int size, const SrdmSettings& settings) {
   if (settings.domains < 1 || settings.domains > 1024)
     throwInput("--srdm-n {} is out of range (allowed: 1..1024)", settings.domains);
-  if (settings.points < 2 || settings.points > std::min(map.size, 256))
+  if (settings.points < 2 || settings.points > std::min(size, 256))
     throwInput("--srdm-m {} is out of range (allowed: 2..{}, at most the depth map's size)",
-               settings.points, std::min(map.size, 256));
+               settings.points, std::min(size, 256));
+}
+
+Srdm buildSrdm(const DepthMap& map, const SrdmSettings& settings) {
+  checkSrdmSettings(map.size, settings);
   Srdm srdm;
   srdm.size = map.size;
   srdm.domains = settings.domains;

@@ -80,6 +80,9 @@ struct Srdm {
 // Row `row` of domain `domain`, unpacked (padding included, as span starts).
 RowPolyline decodeRow(const Srdm& srdm, int domain, int row);
 
+// Throws InputError unless 1 <= n <= 1024 and 2 <= m <= min(w, 256) (both builders check).
+void checkSrdmSettings(int size, const SrdmSettings& settings);
+
 // Builds all n * w rows in parallel (TBB). Throws InputError for settings out of range.
 Srdm buildSrdm(const DepthMap& map, const SrdmSettings& settings);
 
