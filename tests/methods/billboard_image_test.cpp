@@ -15,10 +15,6 @@ namespace {
 
 class BillboardImages : public GlTest {};
 
-double reflectorPsnr(const RenderPair& p) {
-  return psnrFromMse(meanSquaredError(p.gpu, p.cpu, &p.cpu_ids));
-}
-
 TEST_F(BillboardImages, APlanarFloorIsExact) {
   // The floor is its own billboard, captured head-on: a reflected ray meets the billboard where
   // it meets the floor, so only texture resampling separates it from the ray tracer.

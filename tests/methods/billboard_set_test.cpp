@@ -9,12 +9,6 @@
 namespace mirage::test {
 namespace {
 
-int instanceNamed(const Scene& scene, const std::string& name) {
-  for (size_t i = 0; i < scene.instances.size(); ++i)
-    if (scene.instances[i].name == name) return int(i);
-  return -1;
-}
-
 vec3 quadCentre(const BillboardSpec& b) {
   return b.corner + 0.5f * (b.edge_u + b.edge_v);
 }

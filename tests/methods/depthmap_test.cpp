@@ -16,6 +16,7 @@
 #include "support/gl_test.h"
 #include "support/image_check.h"
 #include "support/render_pair.h"
+#include "support/scenes.h"
 #include "support/test_files.h"
 
 namespace mirage::shading {
@@ -159,22 +160,12 @@ TEST(DepthMapSet, MapsFollowTheirObjectRigidly) {
 
 class DepthMapImages : public GlTest {};
 
-double reflectorPsnr(const RenderPair& p) {
-  return psnrFromMse(meanSquaredError(p.gpu, p.cpu, &p.cpu_ids));
-}
-
 // teapot-sphere without its floor: the reflector pixels show the sky and the two objects, so
 // that the objects' reflections carry the error.
 Scene objectsOnly() {
   Scene scene = makeBuiltinScene("teapot-sphere");
   scene.instances.erase(scene.instances.begin());  // the floor comes first
   return scene;
-}
-
-int instanceNamed(const Scene& scene, const std::string& name) {
-  for (size_t i = 0; i < scene.instances.size(); ++i)
-    if (scene.instances[i].name == name) return int(i);
-  return -1;
 }
 
 TEST_F(DepthMapImages, ReflectsCurvedObjectsBetterThanBillboards) {
@@ -262,7 +253,7 @@ TEST(DepthMapCli, BadParametersExitWithTheAllowedRange) {
   const std::vector<Case> cases = {
       {"--srdm-n 0", "--srdm-n"},
       {"--srdm-m 1", "--srdm-m"},
-      {"--depthmap-size 32 --srdm-m 64", "at most --depthmap-size"},
+      {"--depthmap-size 32 --srdm-m 64", "at most the depth map's size --depthmap-size"},
       {"--depthmap-size 8", "--depthmap-size"},
       {"--depthmap-size 5000", "--depthmap-size"},
       {"--depthmap-maps 7", "--depthmap-maps"},

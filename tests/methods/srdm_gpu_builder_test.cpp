@@ -14,6 +14,7 @@
 #include "methods/depthmap/srdm.h"
 #include "methods/depthmap/srdm_gpu_builder.h"
 #include "scene/builtin_scenes.h"
+#include "support/depth_maps.h"
 #include "support/gl_test.h"
 
 namespace mirage::test {
@@ -33,36 +34,6 @@ const DepthMap& teapotMap() {
     }
     return DepthMap{};
   }();
-  return map;
-}
-
-// Analytic spheres (as tests/methods/srdm_test.cpp): GL depth of a pinhole camera at the origin
-// looking down -z, 40 degrees field of view, planes 1 and 5.
-DepthMap spheresMap(int size) {
-  const std::vector<vec4> spheres = {vec4(0.0f, 0.0f, -3.0f, 0.8f), vec4(0.55f, 0.35f, -2.2f, 0.3f),
-                                     vec4(-0.7f, -0.6f, -3.5f, 0.25f)};
-  DepthMap map;
-  map.size = size;
-  map.near = 1.0f;
-  map.far = 5.0f;
-  map.depth.assign(size_t(size) * size_t(size), 1.0f);
-  const float half = std::tan(glm::radians(20.0f));
-  for (int y = 0; y < size; ++y)
-    for (int x = 0; x < size; ++x) {
-      const vec3 dir =
-          glm::normalize(vec3((2.0f * (float(x) + 0.5f) / float(size) - 1.0f) * half,
-                              (2.0f * (float(y) + 0.5f) / float(size) - 1.0f) * half, -1.0f));
-      float best = 1e30f;
-      for (const vec4& s : spheres) {
-        const float b = glm::dot(dir, vec3(s)),
-                    disc = b * b - glm::dot(vec3(s), vec3(s)) + s.w * s.w;
-        if (disc >= 0.0f && b - std::sqrt(disc) > 0.0f) best = std::min(best, b - std::sqrt(disc));
-      }
-      const float z = best * -dir.z;
-      if (best < 1e30f && z > map.near && z < map.far)
-        map.depth[size_t(y) * size_t(size) + size_t(x)] =
-            map.far * (z - map.near) / (z * (map.far - map.near));
-    }
   return map;
 }
 
@@ -127,7 +98,7 @@ TEST_F(SrdmGpuBuilderTest, MatchesTheCpuBuilderOnATracedObject) {
 }
 
 TEST_F(SrdmGpuBuilderTest, MatchesTheCpuBuilderWhereErrorsTie) {
-  const DepthMap map = spheresMap(128);
+  const DepthMap map = threeSpheresDepthMap(128);
   SrdmGpuBuilder builder;
   for (auto [n, m] : {std::pair{60, 8}, {18, 16}, {30, 4}, {60, 64}})
     expectSameAsCpu(map, "spheres", {n, m, SrdmSimplifier::kGreedy}, builder);
@@ -136,7 +107,8 @@ TEST_F(SrdmGpuBuilderTest, MatchesTheCpuBuilderWhereErrorsTie) {
 TEST_F(SrdmGpuBuilderTest, MatchesTheCpuBuilderOnLongRowsAndEmptyMaps) {
   SrdmGpuBuilder builder;
   // Diagonal rows of 725 samples: nothing of a row is held in a fixed-size array.
-  expectSameAsCpu(spheresMap(512), "spheres-512", {24, 16, SrdmSimplifier::kGreedy}, builder);
+  expectSameAsCpu(threeSpheresDepthMap(512), "spheres-512", {24, 16, SrdmSimplifier::kGreedy},
+                  builder);
   // No foreground: an empty box, every row padding.
   DepthMap empty;
   empty.size = 32;
@@ -149,7 +121,7 @@ TEST_F(SrdmGpuBuilderTest, MatchesTheCpuBuilderOnLongRowsAndEmptyMaps) {
 
 TEST_F(SrdmGpuBuilderTest, ReadsADepthTexture) {
   // The depth-map capture's attachment: DEPTH_COMPONENT32F, read with texelFetch alike.
-  const DepthMap map = spheresMap(64);
+  const DepthMap map = threeSpheresDepthMap(64);
   gpu::Texture depth = gpu::Texture::create2D(GL_DEPTH_COMPONENT32F, map.size, map.size);
   depth.upload(0, GL_DEPTH_COMPONENT, GL_FLOAT, map.depth.data());
   const SrdmSettings settings{30, 8, SrdmSimplifier::kGreedy};
@@ -164,7 +136,7 @@ TEST_F(SrdmGpuBuilderTest, ReadsADepthTexture) {
 }
 
 TEST_F(SrdmGpuBuilderTest, RejectsWhatItCannotBuild) {
-  const DepthMap map = spheresMap(32);
+  const DepthMap map = threeSpheresDepthMap(32);
   SrdmGpuBuilder builder;
   EXPECT_THROW(builder.build(map, {0, 8, SrdmSimplifier::kGreedy}), InputError);
   EXPECT_THROW(builder.build(map, {1025, 8, SrdmSimplifier::kGreedy}), InputError);

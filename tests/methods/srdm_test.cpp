@@ -9,45 +9,13 @@
 #include "core/error.h"
 #include "methods/depthmap/srdm.h"
 #include "methods/depthmap/srdm_shared.h"
+#include "support/depth_maps.h"
 
 namespace mirage {
 namespace {
 
-// A depth map of spheres seen by a pinhole camera at the origin looking down -z (vertical and
-// horizontal field of view 40 degrees), ray-cast analytically: GL depth of the nearest hit.
-DepthMap spheresDepthMap(int size, const std::vector<vec4>& spheres, float near = 1.0f,
-                         float far = 5.0f) {
-  DepthMap map;
-  map.size = size;
-  map.near = near;
-  map.far = far;
-  map.depth.assign(size_t(size) * size_t(size), 1.0f);
-  const float half = std::tan(glm::radians(20.0f));
-  for (int y = 0; y < size; ++y)
-    for (int x = 0; x < size; ++x) {
-      const vec3 dir =
-          glm::normalize(vec3((2.0f * (float(x) + 0.5f) / float(size) - 1.0f) * half,
-                              (2.0f * (float(y) + 0.5f) / float(size) - 1.0f) * half, -1.0f));
-      float best = 1e30f;
-      for (const vec4& s : spheres) {
-        const vec3 c(s);
-        const float b = glm::dot(dir, c), disc = b * b - glm::dot(c, c) + s.w * s.w;
-        if (disc < 0.0f) continue;
-        const float t = b - std::sqrt(disc);
-        if (t > 0.0f) best = std::min(best, t);
-      }
-      if (best >= 1e30f) continue;
-      const float z = best * -dir.z;  // eye depth along the axis
-      if (z <= near || z >= far) continue;
-      map.depth[size_t(y) * size_t(size) + size_t(x)] = far * (z - near) / (z * (far - near));
-    }
-  return map;
-}
-
 DepthMap testMap(int size = 128) {
-  // A large sphere with a smaller one in front of its edge: spans, silhouettes, a depth step.
-  return spheresDepthMap(size, {vec4(0.0f, 0.0f, -3.0f, 0.8f), vec4(0.55f, 0.35f, -2.2f, 0.3f),
-                                vec4(-0.7f, -0.6f, -3.5f, 0.25f)});
+  return test::threeSpheresDepthMap(size);
 }
 
 RowSamples syntheticRow(const std::vector<float>& d) {

@@ -10,6 +10,7 @@
 
 #include "scene/mesh_stage.h"
 #include "scene/scene_loader.h"
+#include "support/scenes.h"
 #include "support/test_files.h"
 
 namespace mirage::test {
@@ -17,19 +18,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-int findInstance(const Scene& s, const std::string& name) {
-  for (size_t i = 0; i < s.instances.size(); ++i)
-    if (s.instances[i].name == name) return int(i);
-  return -1;
-}
-
 TEST(MeshStage, PlyModelIsMirrorFinishedOnACheckerGround) {
   fs::path dir = testTempDir("mesh-stage");
   std::ofstream(dir / "block.ply") << boxPlyText({1, 2, 3}, {5, 4, 4});  // extent 4 x 2 x 1
   Scene s = loadScene((dir / "block.ply").string());
   EXPECT_EQ(s.name, "block");
 
-  int model = findInstance(s, "block");
+  int model = instanceNamed(s, "block");
   ASSERT_GE(model, 0);
   const Material& finish = s.materials[size_t(s.instances[size_t(model)].material)];
   EXPECT_TRUE(finish.isReflector());
@@ -43,7 +38,7 @@ TEST(MeshStage, PlyModelIsMirrorFinishedOnACheckerGround) {
   EXPECT_NEAR(b.center().x, 0.0f, 1e-5f);
   EXPECT_NEAR(b.center().z, 0.0f, 1e-5f);
 
-  int floor = findInstance(s, "floor");
+  int floor = instanceNamed(s, "floor");
   ASSERT_GE(floor, 0);
   const Material& checker = s.materials[size_t(s.instances[size_t(floor)].material)];
   EXPECT_GT(checker.checker_scale, 0.0f);
@@ -86,7 +81,7 @@ TEST(MeshStage, GzippedPlyIsNamedWithoutBothExtensions) {
   gzclose(f);
   Scene s = makeMeshStage((dir / "tower.ply.gz").string());
   EXPECT_EQ(s.name, "tower");
-  int model = findInstance(s, "tower");
+  int model = instanceNamed(s, "tower");
   ASSERT_GE(model, 0);
   EXPECT_NEAR(s.instanceBounds(model).extent().y, kStageModelSize, 1e-5f);
 }
@@ -98,7 +93,7 @@ TEST(MeshStage, DiffuseModelGetsAMirrorSphereBesideIt) {
                                      "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
                                      "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
   Scene s = makeMeshStage((dir / "clay.obj").string());
-  int sphere = findInstance(s, "mirror-sphere");
+  int sphere = instanceNamed(s, "mirror-sphere");
   ASSERT_GE(sphere, 0);
   EXPECT_EQ(s.reflectorInstances(), std::vector<int>{sphere});
   // Beside the model, on the ground, not inside it.

@@ -1,6 +1,7 @@
 #include "support/render_pair.h"
 
 #include "core/display.h"
+#include "eval/metrics.h"
 #include "raytrace/tracer.h"
 
 namespace mirage::test {
@@ -17,6 +18,10 @@ RenderPair renderWithTruth(const Scene& scene, const std::string& method, ivec2 
   tracer.prepare(time);
   TraceResult truth = tracer.render(view, {settings.order, 1});
   return {displayed(frame.color), displayed(truth.color), frame.ids, truth.ids};
+}
+
+double reflectorPsnr(const RenderPair& p) {
+  return psnrFromMse(meanSquaredError(p.gpu, p.cpu, &p.cpu_ids));
 }
 
 Image displayed(const Image& linear) {

@@ -20,6 +20,9 @@ RenderPair renderWithTruth(const Scene& scene, const std::string& method, ivec2 
                            const std::map<std::string, std::string>& params = {},
                            float time = 0.0f);
 
+// PSNR of the method's frame against the ray tracer's on the ray tracer's reflector pixels.
+double reflectorPsnr(const RenderPair& p);
+
 // A rendered frame's colour as the image tests compare it (exposure 1, ACES, sRGB).
 Image displayed(const Image& linear);
 

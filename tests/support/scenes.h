@@ -1,10 +1,19 @@
 // Small scenes built in code for tests.
 #pragma once
 
+#include <string>
+
 #include "scene/builtin_scenes.h"
 #include "scene/procedural.h"
 
 namespace mirage::test {
+
+// The index of the instance called `name`, or -1.
+inline int instanceNamed(const Scene& scene, const std::string& name) {
+  for (size_t i = 0; i < scene.instances.size(); ++i)
+    if (scene.instances[i].name == name) return int(i);
+  return -1;
+}
 
 // Adds a camera at `position` looking at `target`, then validates the scene.
 inline void finishScene(Scene& s, vec3 position, vec3 target, float fov_y_degrees) {

@@ -20,9 +20,8 @@ DepthMapCapture::DepthMapCapture(const DepthMapOptions& options, const SrdmSetti
       scratch_depth_(gpu::Texture::create2D(GL_DEPTH_COMPONENT32F, options.size, options.size)),
       program_(gpu::Program::graphics("render/shaders/scene.vert",
                                       "methods/impostor/capture_diffuse.frag")) {
-  if (srdm.points > options.size)
-    throwInput("--srdm-m {} is out of range (allowed: 2..{}, at most --depthmap-size)", srdm.points,
-               std::min(options.size, 256));
+  // The builder's own check, before anything is captured.
+  checkSrdmSettings(options.size, srdm);
 }
 
 void DepthMapCapture::allocate(int maps) {

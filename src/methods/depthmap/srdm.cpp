@@ -276,8 +276,10 @@ void checkSrdmSettings(int size, const SrdmSettings& settings) {
   if (settings.domains < 1 || settings.domains > 1024)
     throwInput("--srdm-n {} is out of range (allowed: 1..1024)", settings.domains);
   if (settings.points < 2 || settings.points > std::min(size, 256))
-    throwInput("--srdm-m {} is out of range (allowed: 2..{}, at most the depth map's size)",
-               settings.points, std::min(size, 256));
+    throwInput(
+        "--srdm-m {} is out of range (allowed: 2..{}, at most the depth map's size "
+        "--depthmap-size)",
+        settings.points, std::min(size, 256));
 }
 
 Srdm buildSrdm(const DepthMap& map, const SrdmSettings& settings) {
