@@ -17,7 +17,7 @@ void registerEmbreeBenchmarks();
 void registerFrameBenchmarks();  // RayTracer::render frames, BVH builds
 void registerEnvironmentBenchmarks();
 void registerGlBenchmarks();  // cube-map captures; skipped with a message without OpenGL 4.5
-void registerSrdmBenchmarks();  // the CPU SRDM builder (w = 256, n and m as the paper)
+void registerSrdmBenchmarks();  // the CPU and GPU SRDM builders (w = 256, n and m as the paper)
 
 // Records a benchmark group that could not run and why (in the JSON context and on stderr).
 void noteSkipped(const std::string& what, const std::string& why);
