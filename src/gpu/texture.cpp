@@ -21,16 +21,33 @@ void checkSize(int width, int height, int layers) {
 
 Texture::Texture(GLenum target, GLenum format, ivec2 size, int layers, int levels)
     : target_(target), format_(format), size_(size), layers_(layers), levels_(levels) {
+  if (target == 0) return;  // a view: view() makes the name
   GLuint id = 0;
   glCreateTextures(target, 1, &id);
   handle_ = Handle<TextureTraits>(id);
-  GLenum min_filter = levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR;
-  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GLint(min_filter));
-  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  GLint wrap = GL_CLAMP_TO_EDGE;
-  glTextureParameteri(id, GL_TEXTURE_WRAP_S, wrap);
-  glTextureParameteri(id, GL_TEXTURE_WRAP_T, wrap);
-  glTextureParameteri(id, GL_TEXTURE_WRAP_R, wrap);
+  setDefaultSampling();
+}
+
+void Texture::setDefaultSampling() {
+  setFilter(levels_ > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);
+  setWrap(GL_CLAMP_TO_EDGE);
+}
+
+Texture Texture::view(const Texture& source, GLenum target, int first_layer, int layers) {
+  if (first_layer < 0 || layers < 1 || first_layer + layers > source.layers_ ||
+      (target == GL_TEXTURE_2D && layers != 1))
+    throwRuntime("texture view of layers {}..{} of a {}-layer texture", first_layer,
+                 first_layer + layers - 1, source.layers_);
+  Texture t(0, source.format_, source.size_, layers, source.levels_);
+  t.target_ = target;
+  // glTextureView needs a name that has never been bound: glGenTextures, not glCreateTextures.
+  GLuint id = 0;
+  glGenTextures(1, &id);
+  glTextureView(id, target, source.id(), source.format_, 0, GLuint(source.levels_),
+                GLuint(first_layer), GLuint(layers));
+  t.handle_ = Handle<TextureTraits>(id);
+  t.setDefaultSampling();
+  return t;
 }
 
 int Texture::fullMipLevels(int size) {

@@ -17,6 +17,10 @@ class Texture {
   static Texture createCubeArray(GLenum internal_format, int size, int cubes, int levels = 1);
   // The number of levels of a full mip chain for the given largest side.
   static int fullMipLevels(int size);
+  // A view of `layers` layers of `source` from `first_layer`, all its levels, as `target`
+  // (GL_TEXTURE_2D for one layer, GL_TEXTURE_2D_ARRAY for several): the same storage, so that a
+  // pass written for a 2D texture or a whole array can work on part of a larger array.
+  static Texture view(const Texture& source, GLenum target, int first_layer, int layers);
 
   GLuint id() const { return handle_.id(); }
   GLenum target() const { return target_; }
@@ -42,6 +46,7 @@ class Texture {
 
  private:
   Texture(GLenum target, GLenum format, ivec2 size, int layers, int levels);
+  void setDefaultSampling();
 
   Handle<TextureTraits> handle_;
   GLenum target_ = 0, format_ = 0;

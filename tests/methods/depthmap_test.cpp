@@ -203,6 +203,34 @@ TEST_F(DepthMapImages, SrdmSearchMatchesTheFullMapWalk) {
   EXPECT_TRUE(psnrAtLeast(da, db, 35.0, &a.ids, "depthmap-srdm-vs-linear"));
 }
 
+TEST_F(DepthMapImages, GpuSrdmBuilderGivesTheCpuBuildersImage) {
+  // The compute-shader builder works in place on the method's depth and SRDM arrays (texture
+  // views of one layer and of n layers); its rows equal the CPU builder's, so the frames must
+  // be the same bit for bit.
+  const Scene scene = objectsOnly();
+  FrameSettings settings;
+  settings.order = 1;
+  const ivec2 size{240, 160};
+  FrameRenderer renderer(scene, size);
+  const View view(scene.camera(), size);
+  auto frame = [&](const char* builder, int maps) {
+    auto m = renderer.createMethod(
+        "depthmap", {{"srdm-builder", builder}, {"depthmap-maps", std::to_string(maps)}},
+        settings);
+    renderer.render(*m, view, 0.0f, settings);
+    EXPECT_EQ(m->stats().at("srdm_builds"), 2.0 * maps) << builder;
+    return renderer.read().color;
+  };
+  for (int maps : {1, 3}) {
+    const Image cpu = frame("cpu", maps), gpu = frame("gpu", maps);
+    ASSERT_EQ(cpu.size(), gpu.size());
+    size_t differing = 0;
+    for (size_t i = 0; i < cpu.pixelCount(); ++i)
+      differing += cpu.pixels()[i] != gpu.pixels()[i] ? 1 : 0;
+    EXPECT_EQ(differing, 0u) << maps << " maps per object";
+  }
+}
+
 TEST_F(DepthMapImages, RigidMotionRebuildsNothingAndStaysCorrect) {
   Scene scene = objectsOnly();
   const int teapot = instanceNamed(scene, "teapot");
@@ -259,6 +287,7 @@ TEST(DepthMapCli, BadParametersExitWithTheAllowedRange) {
       {"--depthmap-maps 7", "--depthmap-maps"},
       {"--srdm-simplify best", "--srdm-simplify"},
       {"--depthmap-search binary", "--depthmap-search"},
+      {"--srdm-builder gpu --srdm-simplify fit", "--srdm-simplify greedy"},
   };
   for (const Case& c : cases) {
     const CliResult r =

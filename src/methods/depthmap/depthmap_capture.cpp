@@ -14,7 +14,8 @@ bool sameSpec(const DepthMapSpec& a, const DepthMapSpec& b) {
 
 }  // namespace
 
-DepthMapCapture::DepthMapCapture(const DepthMapOptions& options, const SrdmSettings& srdm)
+DepthMapCapture::DepthMapCapture(const DepthMapOptions& options, const SrdmSettings& srdm,
+                                 SrdmBuilder builder)
     : options_(options),
       srdm_settings_(srdm),
       scratch_depth_(gpu::Texture::create2D(GL_DEPTH_COMPONENT32F, options.size, options.size)),
@@ -22,6 +23,13 @@ DepthMapCapture::DepthMapCapture(const DepthMapOptions& options, const SrdmSetti
                                       "methods/impostor/capture_diffuse.frag")) {
   // The builder's own check, before anything is captured.
   checkSrdmSettings(options.size, srdm);
+  if (builder == SrdmBuilder::kGpu) {
+    if (srdm.simplifier != SrdmSimplifier::kGreedy)
+      throwInput("--srdm-builder gpu with --srdm-simplify {}: the GPU builder runs only the "
+                 "greedy simplifier (allowed: --srdm-simplify greedy, or --srdm-builder cpu)",
+                 srdmSimplifierName(srdm.simplifier));
+    gpu_builder_ = std::make_unique<SrdmGpuBuilder>();
+  }
 }
 
 void DepthMapCapture::allocate(int maps) {
@@ -44,8 +52,7 @@ void DepthMapCapture::allocate(int maps) {
   color_valid_.assign(size_t(count), false);
   depth_valid_.assign(size_t(count), false);
   built_for_.assign(size_t(count), DepthMapSpec{});
-  maps_.assign(size_t(count), DepthMap{});
-  srdm_cpu_.assign(size_t(count), Srdm{});
+  dropped_.assign(size_t(count), 0);
 }
 
 int DepthMapCapture::update(GpuScene& gpu, ScenePasses& passes,
@@ -102,23 +109,33 @@ void DepthMapCapture::render(GpuScene& gpu, ScenePasses& passes, const DepthMapS
 
 void DepthMapCapture::build(int layer, const View& view) {
   Stopwatch watch;
-  DepthMap& map = maps_[size_t(layer)];
-  map.size = options_.size;
-  map.near = view.nearPlane();
-  map.far = view.farPlane();
-  map.depth.resize(size_t(map.size) * size_t(map.size));
-  depths_.downloadLayer(0, layer, GL_DEPTH_COMPONENT, GL_FLOAT, map.depth.data(),
-                        map.depth.size() * sizeof(float));
-  Srdm& srdm = srdm_cpu_[size_t(layer)];
-  srdm = buildSrdm(map, srdm_settings_);
-  srdms_.uploadLayers(0, layer * srdm.domains, srdm.domains, GL_RGBA, GL_FLOAT, srdm.texels.data());
+  const int n = srdm_settings_.domains;
+  if (gpu_builder_) {
+    // The map's depth layer as a 2D texture and its n SRDM layers as an array: the builder
+    // reads and writes them in place, with no read-back.
+    const gpu::Texture depth = gpu::Texture::view(depths_, GL_TEXTURE_2D, layer, 1);
+    gpu::Texture out = gpu::Texture::view(srdms_, GL_TEXTURE_2D_ARRAY, layer * n, n);
+    gpu_builder_->build(depth, view.nearPlane(), view.farPlane(), srdm_settings_, out);
+    dropped_[size_t(layer)] = gpu_builder_->droppedSamples();  // waits for the build
+  } else {
+    DepthMap map;
+    map.size = options_.size;
+    map.near = view.nearPlane();
+    map.far = view.farPlane();
+    map.depth.resize(size_t(map.size) * size_t(map.size));
+    depths_.downloadLayer(0, layer, GL_DEPTH_COMPONENT, GL_FLOAT, map.depth.data(),
+                          map.depth.size() * sizeof(float));
+    const Srdm srdm = buildSrdm(map, srdm_settings_);
+    srdms_.uploadLayers(0, layer * n, n, GL_RGBA, GL_FLOAT, srdm.texels.data());
+    dropped_[size_t(layer)] = srdm.dropped_samples;
+  }
   last_build_ms_ = watch.ms();
   ++srdm_builds_;
 }
 
 int DepthMapCapture::droppedSamples() const {
   int dropped = 0;
-  for (const Srdm& s : srdm_cpu_) dropped += s.dropped_samples;
+  for (int d : dropped_) dropped += d;
   return dropped;
 }
 

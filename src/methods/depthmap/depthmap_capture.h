@@ -3,9 +3,11 @@
 // depend only on the camera in the object's space and the settings, so rigid motion rebuilds
 // nothing; the colour depends on the light as the object sees it (its direction in the object's
 // space, colour, ambient), so a light change — or a rotation relative to the light — re-captures
-// the colour alone.
+// the colour alone. The SRDMs are built on the CPU from the depth read back (the default: the
+// faster here), or on the GPU straight from the depth array by SrdmGpuBuilder (greedy only).
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "gpu/framebuffer.h"
@@ -13,15 +15,20 @@
 #include "gpu/texture.h"
 #include "methods/depthmap/depthmap_set.h"
 #include "methods/depthmap/srdm.h"
+#include "methods/depthmap/srdm_gpu_builder.h"
 #include "render/gpu_scene.h"
 #include "render/scene_passes.h"
 
 namespace mirage {
 
+enum class SrdmBuilder { kCpu, kGpu };
+
 class DepthMapCapture {
  public:
-  // Needs a current OpenGL 4.5 context. Throws InputError for settings out of range.
-  DepthMapCapture(const DepthMapOptions& options, const SrdmSettings& srdm);
+  // Needs a current OpenGL 4.5 context. Throws InputError for settings out of range, and for
+  // the GPU builder with a simplifier other than greedy.
+  DepthMapCapture(const DepthMapOptions& options, const SrdmSettings& srdm,
+                  SrdmBuilder builder = SrdmBuilder::kCpu);
 
   // Captures and builds what changed; returns the number of colour captures made.
   int update(GpuScene& gpu, ScenePasses& passes, const std::vector<DepthMapSpec>& specs,
@@ -30,13 +37,11 @@ class DepthMapCapture {
   const gpu::Texture& colors() const { return colors_; }  // RGBA16F, premultiplied, mip-mapped
   const gpu::Texture& depths() const { return depths_; }  // DEPTH_COMPONENT32F
   const gpu::Texture& srdms() const { return srdms_; }    // RGBA32F, maps x n layers
-  // The depth maps as last read back (CPU builder) and their SRDMs, per map.
-  const std::vector<DepthMap>& depthMaps() const { return maps_; }
-  const std::vector<Srdm>& cpuSrdms() const { return srdm_cpu_; }
 
   long colorCaptures() const { return color_captures_; }
   long depthCaptures() const { return depth_captures_; }
   long srdmBuilds() const { return srdm_builds_; }
+  // The last build's wall time; the GPU builder's includes waiting for it.
   double lastBuildMs() const { return last_build_ms_; }
   int droppedSamples() const;
 
@@ -58,8 +63,8 @@ class DepthMapCapture {
   std::vector<ColorKey> color_keys_;
   std::vector<bool> color_valid_, depth_valid_;
   std::vector<DepthMapSpec> built_for_;
-  std::vector<DepthMap> maps_;
-  std::vector<Srdm> srdm_cpu_;
+  std::unique_ptr<SrdmGpuBuilder> gpu_builder_;  // null: the CPU builder
+  std::vector<int> dropped_;                     // per map
   long color_captures_ = 0, depth_captures_ = 0, srdm_builds_ = 0;
   double last_build_ms_ = 0.0;
 };

@@ -34,7 +34,9 @@ class DepthMapMethod final : public Method {
         srdm_(srdmSettings(setup.params)),
         specs_(placeDepthMaps(setup.gpu.scene(), options_)),
         stage_(stageOptions(setup.params, specs_)),
-        capture_(options_, srdm_),
+        capture_(options_, srdm_,
+                 setup.params.text("srdm-builder") == "gpu" ? SrdmBuilder::kGpu
+                                                            : SrdmBuilder::kCpu),
         last_bounce_reflective_(setup.params.text("last-bounce") == "all"),
         linear_(setup.params.text("depthmap-search") == "linear"),
         rows_(setup.params.integer("srdm-rows")),
@@ -148,6 +150,9 @@ MethodEntry depthmapMethodEntry() {
       ParamSpec::choice("srdm-simplify", {"greedy", "fit"}, "greedy",
                         "row simplifier: the paper's greedy refinement, or its knots with "
                         "depths fitted by least squares"),
+      ParamSpec::choice("srdm-builder", {"cpu", "gpu"}, "cpu",
+                        "SRDM builder: multithreaded CPU from the depth read back (the faster "
+                        "on llvmpipe), or a compute shader on the depth array (greedy only)"),
       ParamSpec::choice("depthmap-search", {"srdm", "linear"}, "srdm",
                         "ray-depth-map intersection: one SRDM row, or a walk of the full map "
                         "along the projected ray (the baseline)"),
