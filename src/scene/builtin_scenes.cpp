@@ -105,6 +105,27 @@ Scene teapotSphere() {
   return s;
 }
 
+Scene mirrorTorus() {
+  Scene s;
+  s.description =
+      "a standing mirror torus beside a teapot on a checkerboard, seen into its hole: the inner "
+      "surface reflects itself (self-reflections)";
+  addCheckerFloor(s, 16.0f);
+  int teapot = addMesh(s, procedural::teapotLike());
+  int purple = addMaterial(s, Material::diffuse("purple", {0.55f, 0.25f, 0.7f}));
+  addInstance(s, "teapot", teapot, purple, placeAt({-1.6f, 0.0f, 0.9f}, vec3(1.2f), rotationY(-30)));
+  int torus = addMesh(s, procedural::torus(0.9f, 0.35f, 96, 48));
+  int mirror = addMaterial(s, Material::mirror("mirror"));
+  addInstance(s, "mirror-torus", torus, mirror, placeAt({0.3f, 1.25f, -0.4f}, vec3(1.0f), rotationY(20)));
+  CameraDesc cam;
+  cam.name = "main";
+  cam.position = {1.2f, 1.9f, 3.0f};
+  cam.target = {0.3f, 1.2f, -0.4f};
+  cam.fov_y_degrees = 40.0f;
+  s.cameras.push_back(cam);
+  return s;
+}
+
 Scene mirrorRoom() {
   Scene s;
   s.description =
@@ -204,36 +225,46 @@ Transform placeAt(vec3 translation, vec3 scale, quat rotation) {
   return t;
 }
 
+namespace {
+
+struct BuiltinMaker {
+  const char* name;
+  Scene (*make)(const SceneOptions&);
+};
+
+// The built-in scenes, in the order `mirage scenes` lists them.
+constexpr BuiltinMaker kBuiltins[] = {
+    {"sphere-over-checker", [](const SceneOptions&) { return sphereOverChecker(); }},
+    {"spheres9", [](const SceneOptions& o) { return spheres9(o); }},
+    {"mirror-room", [](const SceneOptions&) { return mirrorRoom(); }},
+    {"two-mirrors", [](const SceneOptions&) { return twoMirrors(); }},
+    {"teapot-sphere", [](const SceneOptions&) { return teapotSphere(); }},
+    {"mirror-torus", [](const SceneOptions&) { return mirrorTorus(); }},
+};
+
+const BuiltinMaker* findBuiltin(const std::string& name) {
+  for (const BuiltinMaker& b : kBuiltins)
+    if (name == b.name) return &b;
+  return nullptr;
+}
+
+}  // namespace
+
 const std::vector<BuiltinSceneInfo>& builtinScenes() {
   static const std::vector<BuiltinSceneInfo> scenes = [] {
     std::vector<BuiltinSceneInfo> v;
-    for (const char* name :
-         {"sphere-over-checker", "spheres9", "mirror-room", "two-mirrors", "teapot-sphere"})
-      v.push_back({name, makeBuiltinScene(name).description});
+    for (const BuiltinMaker& b : kBuiltins) v.push_back({b.name, makeBuiltinScene(b.name).description});
     return v;
   }();
   return scenes;
 }
 
-bool isBuiltinScene(const std::string& name) {
-  return name == "sphere-over-checker" || name == "spheres9" || name == "mirror-room" ||
-         name == "two-mirrors" || name == "teapot-sphere";
-}
+bool isBuiltinScene(const std::string& name) { return findBuiltin(name) != nullptr; }
 
 Scene makeBuiltinScene(const std::string& name, const SceneOptions& options) {
-  Scene s;
-  if (name == "sphere-over-checker")
-    s = sphereOverChecker();
-  else if (name == "spheres9")
-    s = spheres9(options);
-  else if (name == "mirror-room")
-    s = mirrorRoom();
-  else if (name == "two-mirrors")
-    s = twoMirrors();
-  else if (name == "teapot-sphere")
-    s = teapotSphere();
-  else
-    throwInput("unknown built-in scene '{}'", name);
+  const BuiltinMaker* maker = findBuiltin(name);
+  if (!maker) throwInput("unknown built-in scene '{}'", name);
+  Scene s = maker->make(options);
   if (options.reflectors >= 0 && name != "spheres9")
     throwInput("--reflectors applies to spheres9 only, not to '{}'", name);
   s.name = name;

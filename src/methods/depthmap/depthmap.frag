@@ -3,7 +3,9 @@
 // tested through the one of its maps that looks most along the ray: the ray is clipped to that
 // camera's frustum, projected into texel space, and searched in one SRDM row (or two, or the
 // full map with --depthmap-search linear); a hit nearer than every billboard ends the path with
-// the map's colour at the hit, filtered over the ray differential's footprint.
+// the map's colour at the hit, filtered over the ray differential's footprint. A reflector's
+// maps of itself (--self-maps) are searched by the rays that leave it: a hit there reflects the
+// ray about the map's normal (self-reflection), as a reflective billboard does.
 #include "render/shaders/reflector.glsl"
 #include "methods/depthmap/depthmap_shared.h"
 
@@ -32,54 +34,113 @@ float depthmap_depth(int layer, int x, int y) {
 }
 #include "methods/depthmap/depthmap_march_shared.h"
 
-bool impostor_extra_hit(vec3 origin, vec3 dir, int from, float t_min, inout float t_best,
-                        vec3 dox, vec3 doy, vec3 ddx, vec3 ddy, out vec4 end) {
+// DEPTHMAP_SELF (defined by the method when there are self maps) compiles the self-reflection
+// paths in; without it they fold away, so that scenes without self maps pay nothing for them
+// (llvmpipe runs both sides of a branch).
+#ifdef DEPTHMAP_SELF
+const bool kSelfMaps = true;
+#else
+const bool kSelfMaps = false;
+#endif
+
+// A map's normal at texel-space (u, v) of its layer, in world space (self maps only).
+vec3 depthmap_normal(vec3 uv_layer, int instance) {
+  vec4 texel = textureLod(u_depthmap_color, uv_layer, 0.0f);
+  return normalize(mat3(instances[instance].normal_matrix) * (texel.rgb / max(texel.a, 1.0e-4f)));
+}
+
+// Searches one map for the ray's first hit with t_min < t < t_best (see impostor_extra_hit).
+bool depthmap_search(DepthMapData map, bool self, vec3 origin, vec3 dir,
+                     float t_min, inout float t_best, vec3 dox, vec3 doy, vec3 ddx, vec3 ddy,
+                     inout vec4 end) {
+  float w = float(u_depthmap_size);
+  float t0 = t_min, t1 = t_best;
+  // A ray leaving the surface the map holds starts on it: skip two texels' width of it, so
+  // that the simplified surface around the origin is not taken for a hit.
+  if (self) t0 = max(t0, 2.0f * map.forward.w * max((map.view_proj * vec4(origin, 1.0f)).w, 0.0f));
+  if (!depthmap_clip(map.view_proj, origin, dir, t0, t1)) return false;
+  vec4 c0 = map.view_proj * vec4(origin + t0 * dir, 1.0f);
+  vec4 c1 = map.view_proj * vec4(origin + t1 * dir, 1.0f);
+  vec3 p0 = depthmap_texel_point(c0, w), p1 = depthmap_texel_point(c1, w);
+  float lambda;
+  if (u_depthmap_search == MIRAGE_DEPTHMAP_SEARCH_LINEAR) {
+    int examined;
+    lambda = depthmap_march(map.info.x, u_depthmap_size, p0, p1, examined);
+  } else {
+    g_srdm_base = map.info.y;
+    lambda = u_srdm_rows == 2 ? srdm_intersect_two_rows(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m)
+                              : srdm_intersect(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
+  }
+  if (lambda < 0.0f) return false;
+  float mu = depthmap_unproject_fraction(lambda, c0.w, c1.w);
+  float t = t0 + mu * (t1 - t0);
+  if (t >= t_best) return false;
+  vec3 hit = p0 + (p1 - p0) * lambda;
+  // A surface is hit from its front: a self hit facing away is the ray's own start (or a
+  // silhouette's error), not a reflection.
+  if (self && dot(depthmap_normal(vec3(hit.xy / w, float(map.info.x)), map.info.z), dir) >= 0.0f)
+    return false;
+  t_best = t;
+  // The footprint: the ray differential at the hit against a texel's world size there (clip w
+  // is the eye depth along the camera's axis).
+  float eye_depth = mix(c0.w, c1.w, mu);
+  float texel = map.forward.w * max(eye_depth, 1.0e-6f);
+  float spread = max(length(dox + t * ddx), length(doy + t * ddy));
+  end = vec4(hit.x / w, hit.y / w, float(map.info.x), log2(max(spread / texel, 1.0e-8f)));
+  return true;
+}
+
+bool impostor_extra_hit(vec3 origin, vec3 dir, int from, bool reflective, float t_min,
+                        inout float t_best, vec3 dox, vec3 doy, vec3 ddx, vec3 ddy, out vec4 end) {
   end = vec4(0.0f);
   bool found = false;
-  float w = float(u_depthmap_size);
   for (int i = 0; i < u_depthmap_count;) {
     // The object's maps follow each other; the first holds their count.
     int count = max(depthmaps[i].info.w, 1);
-    int best = i;
+    int first = i;
+    i += count;
+    // A reflector's own maps serve only the rays that leave it.
+    int reflector = kSelfMaps ? instances[depthmaps[first].info.z].ids.y - 1 : -1;
+    bool self = reflector >= 0;
+    if (self && (reflector != from || !reflective)) continue;
+    if (self) {
+      // The ray starts on the object, inside its maps' view: parts of it between a camera and
+      // the origin hide what the ray hits from that camera, whichever way it looks. A hit found
+      // in any map is a crossing of a surface that map sees, so every map is searched and the
+      // nearest hit kept: more maps, fewer misses.
+      for (int k = first; k < first + count; ++k)
+        found = depthmap_search(depthmaps[k], true, origin, dir, t_min, t_best, dox, doy, ddx,
+                                ddy, end) || found;
+      continue;
+    }
+    // An object seen from outside: the map whose camera looks most along the ray (§4.3).
+    int best = first;
     float best_cos = -2.0f;
-    for (int k = i; k < i + count; ++k) {
+    for (int k = first; k < first + count; ++k) {
       float c = dot(dir, depthmaps[k].forward.xyz);
       if (c > best_cos) {
         best_cos = c;
         best = k;
       }
     }
-    i += count;
-    DepthMapData map = depthmaps[best];
-    float t0 = t_min, t1 = t_best;
-    if (!depthmap_clip(map.view_proj, origin, dir, t0, t1)) continue;
-    vec4 c0 = map.view_proj * vec4(origin + t0 * dir, 1.0f);
-    vec4 c1 = map.view_proj * vec4(origin + t1 * dir, 1.0f);
-    vec3 p0 = depthmap_texel_point(c0, w), p1 = depthmap_texel_point(c1, w);
-    float lambda;
-    if (u_depthmap_search == MIRAGE_DEPTHMAP_SEARCH_LINEAR) {
-      int examined;
-      lambda = depthmap_march(map.info.x, u_depthmap_size, p0, p1, examined);
-    } else {
-      g_srdm_base = map.info.y;
-      lambda = u_srdm_rows == 2 ? srdm_intersect_two_rows(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m)
-                                : srdm_intersect(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
-    }
-    if (lambda < 0.0f) continue;
-    float mu = depthmap_unproject_fraction(lambda, c0.w, c1.w);
-    float t = t0 + mu * (t1 - t0);
-    if (t >= t_best) continue;
-    t_best = t;
-    found = true;
-    vec3 hit = p0 + (p1 - p0) * lambda;
-    // The footprint: the ray differential at the hit against a texel's world size there (clip w
-    // is the eye depth along the camera's axis).
-    float eye_depth = mix(c0.w, c1.w, mu);
-    float texel = map.forward.w * max(eye_depth, 1.0e-6f);
-    float spread = max(length(dox + t * ddx), length(doy + t * ddy));
-    end = vec4(hit.x / w, hit.y / w, float(map.info.x), log2(max(spread / texel, 1.0e-8f)));
+    found = depthmap_search(depthmaps[best], false, origin, dir, t_min, t_best, dox, doy, ddx,
+                            ddy, end) || found;
   }
   return found;
+}
+
+bool impostor_extra_reflects(vec4 end, out vec3 normal, out int material, out int leaves) {
+  normal = vec3(0.0f);
+  material = -1;
+  leaves = -1;
+  if (!kSelfMaps) return false;
+  int instance = depthmaps[int(end.z + 0.5f)].info.z;
+  ivec4 ids = instances[instance].ids;
+  if (ids.y <= 0) return false;
+  normal = depthmap_normal(end.xyz, instance);
+  material = ids.x;
+  leaves = ids.y - 1;
+  return true;
 }
 
 vec3 impostor_extra_radiance(vec4 end) {

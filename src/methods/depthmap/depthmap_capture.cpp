@@ -20,7 +20,9 @@ DepthMapCapture::DepthMapCapture(const DepthMapOptions& options, const SrdmSetti
       srdm_settings_(srdm),
       scratch_depth_(gpu::Texture::create2D(GL_DEPTH_COMPONENT32F, options.size, options.size)),
       program_(gpu::Program::graphics("render/shaders/scene.vert",
-                                      "methods/impostor/capture_diffuse.frag")) {
+                                      "methods/impostor/capture_diffuse.frag")),
+      normal_program_(gpu::Program::graphics("render/shaders/scene.vert",
+                                             "methods/depthmap/capture_normal.frag")) {
   // The builder's own check, before anything is captured.
   checkSrdmSettings(options.size, srdm);
   if (builder == SrdmBuilder::kGpu) {
@@ -65,7 +67,9 @@ int DepthMapCapture::update(GpuScene& gpu, ScenePasses& passes,
     const mat4& model = gpu.instanceMatrix(spec.instance);
     // The light as the object sees it: a translation changes nothing, a rotation may.
     const vec3 local_light = glm::normalize(glm::inverse(mat3(model)) * light.direction);
-    const ColorKey key{local_light, light.color, light.ambient};
+    // A normal map depends on nothing the key holds.
+    const ColorKey key =
+        spec.reflector ? ColorKey{} : ColorKey{local_light, light.color, light.ambient};
     const bool depth_ok = depth_valid_[i] && sameSpec(built_for_[i], spec);
     const bool colour_ok = depth_ok && color_valid_[i] && color_keys_[i] == key;
     if (colour_ok) continue;
@@ -102,7 +106,7 @@ void DepthMapCapture::render(GpuScene& gpu, ScenePasses& passes, const DepthMapS
   glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, clear);
   glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &far_depth);
   passes.begin(depthMapView(spec, gpu.instanceMatrix(spec.instance), options_), settings);
-  program_.use();
+  (spec.reflector ? normal_program_ : program_).use();
   gpu.draw(spec.instance);
   if (with_depth) ++depth_captures_;
 }

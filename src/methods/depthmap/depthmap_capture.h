@@ -3,7 +3,8 @@
 // depend only on the camera in the object's space and the settings, so rigid motion rebuilds
 // nothing; the colour depends on the light as the object sees it (its direction in the object's
 // space, colour, ambient), so a light change — or a rotation relative to the light — re-captures
-// the colour alone. The SRDMs are built on the CPU from the depth read back (the default: the
+// the colour alone. A reflector's map of itself holds its object-space normal instead, which
+// nothing but its depth's changes invalidate. The SRDMs are built on the CPU from the depth read back (the default: the
 // faster here), or on the GPU straight from the depth array by SrdmGpuBuilder (greedy only).
 #pragma once
 
@@ -34,7 +35,8 @@ class DepthMapCapture {
   int update(GpuScene& gpu, ScenePasses& passes, const std::vector<DepthMapSpec>& specs,
              const FrameSettings& settings);
 
-  const gpu::Texture& colors() const { return colors_; }  // RGBA16F, premultiplied, mip-mapped
+  // RGBA16F, premultiplied, mip-mapped: colour, or a reflector's object-space normal.
+  const gpu::Texture& colors() const { return colors_; }
   const gpu::Texture& depths() const { return depths_; }  // DEPTH_COMPONENT32F
   const gpu::Texture& srdms() const { return srdms_; }    // RGBA32F, maps x n layers
 
@@ -59,7 +61,7 @@ class DepthMapCapture {
   SrdmSettings srdm_settings_;
   gpu::Texture colors_, depths_, srdms_, scratch_depth_;
   gpu::Framebuffer fbo_;
-  gpu::Program program_;
+  gpu::Program program_, normal_program_;
   std::vector<ColorKey> color_keys_;
   std::vector<bool> color_valid_, depth_valid_;
   std::vector<DepthMapSpec> built_for_;

@@ -1,5 +1,6 @@
 #include "methods/depthmap/depthmap_method.h"
 
+#include <algorithm>
 #include <span>
 
 #include "methods/depthmap/depthmap_capture.h"
@@ -15,6 +16,7 @@ DepthMapOptions depthMapOptions(const ParamValues& params) {
   o.size = params.integer("depthmap-size");
   o.fov_degrees = float(params.real("depthmap-fov"));
   o.maps = params.integer("depthmap-maps");
+  o.self_maps = params.integer("self-maps");
   return o;
 }
 
@@ -40,8 +42,8 @@ class DepthMapMethod final : public Method {
         last_bounce_reflective_(setup.params.text("last-bounce") == "all"),
         linear_(setup.params.text("depthmap-search") == "linear"),
         rows_(setup.params.integer("srdm-rows")),
-        program_(
-            gpu::Program::graphics("render/shaders/scene.vert", "methods/depthmap/depthmap.frag")),
+        program_(gpu::Program::graphics("render/shaders/scene.vert",
+                                        "methods/depthmap/depthmap.frag", shaderDefines(specs_))),
         base_program_(
             gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")) {}
 
@@ -95,6 +97,8 @@ class DepthMapMethod final : public Method {
   std::map<std::string, double> stats() const override {
     std::map<std::string, double> out = stage_.stats();
     out["depth_maps"] = double(specs_.size());
+    out["self_maps"] = double(std::count_if(specs_.begin(), specs_.end(),
+                                            [](const DepthMapSpec& s) { return s.reflector; }));
     out["depthmap_color_captures"] = double(capture_.colorCaptures());
     out["depthmap_color_captures_last_update"] = double(last_captures_);
     out["depthmap_depth_captures"] = double(capture_.depthCaptures());
@@ -105,6 +109,12 @@ class DepthMapMethod final : public Method {
   }
 
  private:
+  static std::vector<std::string> shaderDefines(const std::vector<DepthMapSpec>& specs) {
+    const bool self = std::any_of(specs.begin(), specs.end(),
+                                  [](const DepthMapSpec& s) { return s.reflector; });
+    return self ? std::vector<std::string>{"DEPTHMAP_SELF"} : std::vector<std::string>{};
+  }
+
   static BillboardStageOptions stageOptions(const ParamValues& params,
                                             const std::vector<DepthMapSpec>& specs) {
     BillboardStageOptions o = billboardStageOptions(params);
@@ -144,6 +154,9 @@ MethodEntry depthmapMethodEntry() {
       ParamSpec::integer("depthmap-maps", 1, 6, 1,
                          "depth maps per object: 1 from the reflectors, 2 adds the opposite "
                          "side, up to 6 around; a ray uses the one looking most along it"),
+      ParamSpec::integer("self-maps", 0, 6, 0,
+                         "depth maps of each curved reflector of itself, for its "
+                         "self-reflections (0 = none: a reflector never reflects itself)"),
       ParamSpec::integer("srdm-n", 1, 1024, 60, "rotated domains n (angular step 180/n degrees)"),
       ParamSpec::integer("srdm-m", 2, 256, 8,
                          "points m per simplified row (at most --depthmap-size)"),

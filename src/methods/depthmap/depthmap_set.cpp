@@ -19,6 +19,31 @@ std::vector<vec3> mapDirections(const vec3& towards_reflectors) {
   return {a, -a, b, -b, c, -c};
 }
 
+// Appends `count` maps of instance i, the first looking from the point `viewer` (world, time 0).
+void placeMaps(const Scene& scene, int i, const mat4& model, const vec3& viewer, int count,
+               bool reflector, std::vector<DepthMapSpec>& specs) {
+  const Bounds3 local = scene.meshes[size_t(scene.instances[size_t(i)].mesh)].bounds();
+  if (local.empty()) return;
+  const vec3 world_centre = transformPoint(model, local.center());
+  vec3 towards = viewer - world_centre;
+  towards = glm::length(towards) > 1e-6f ? glm::normalize(towards) : vec3(0, 0, 1);
+  const mat3 to_local = glm::inverse(mat3(model));
+  const std::vector<vec3> dirs = mapDirections(towards);
+  for (int k = 0; k < count; ++k) {
+    const vec3 from = dirs[size_t(k)];
+    const vec3 up_world = std::abs(from.y) > 0.95f ? vec3(0, 0, -1) : vec3(0, 1, 0);
+    DepthMapSpec s;
+    s.instance = i;
+    s.index = k;
+    s.reflector = reflector;
+    s.centre = local.center();
+    s.radius = std::max(local.radius(), 1e-6f);
+    s.from = glm::normalize(to_local * from);
+    s.up = glm::normalize(to_local * up_world);
+    specs.push_back(s);
+  }
+}
+
 }  // namespace
 
 std::vector<DepthMapSpec> placeDepthMaps(const Scene& scene, const DepthMapOptions& options) {
@@ -32,24 +57,14 @@ std::vector<DepthMapSpec> placeDepthMaps(const Scene& scene, const DepthMapOptio
     if (scene.isReflector(i)) continue;
     const mat4 model = scene.instances[size_t(i)].matrixAt(time);
     if (isPlanarInstance(scene, i, model)) continue;
-    const Bounds3 local = scene.meshes[size_t(scene.instances[size_t(i)].mesh)].bounds();
-    if (local.empty()) continue;
-    const vec3 world_centre = transformPoint(model, local.center());
-    vec3 towards = centroid - world_centre;
-    towards = glm::length(towards) > 1e-6f ? glm::normalize(towards) : vec3(0, 0, 1);
-    const mat3 to_local = glm::inverse(mat3(model));
-    const std::vector<vec3> dirs = mapDirections(towards);
-    for (int k = 0; k < options.maps; ++k) {
-      const vec3 from = dirs[size_t(k)];
-      const vec3 up_world = std::abs(from.y) > 0.95f ? vec3(0, 0, -1) : vec3(0, 1, 0);
-      DepthMapSpec s;
-      s.instance = i;
-      s.index = k;
-      s.centre = local.center();
-      s.radius = std::max(local.radius(), 1e-6f);
-      s.from = glm::normalize(to_local * from);
-      s.up = glm::normalize(to_local * up_world);
-      specs.push_back(s);
+    placeMaps(scene, i, model, centroid, options.maps, false, specs);
+  }
+  if (options.self_maps > 0) {
+    const vec3 eye = scene.camera().position;
+    for (int r : reflectors) {
+      const mat4 model = scene.instances[size_t(r)].matrixAt(time);
+      if (isPlanarInstance(scene, r, model)) continue;  // a plane never sees itself
+      placeMaps(scene, r, model, eye, options.self_maps, true, specs);
     }
   }
   return specs;
@@ -58,7 +73,7 @@ std::vector<DepthMapSpec> placeDepthMaps(const Scene& scene, const DepthMapOptio
 std::vector<int> depthMappedInstances(const std::vector<DepthMapSpec>& specs) {
   std::vector<int> out;
   for (const DepthMapSpec& s : specs)
-    if (out.empty() || out.back() != s.instance) out.push_back(s.instance);
+    if (!s.reflector && (out.empty() || out.back() != s.instance)) out.push_back(s.instance);
   return out;
 }
 

@@ -7,6 +7,12 @@
 // Map 0 looks at the object from the reflectors' centroid; map 1 from the opposite side (the
 // front map the paper's swapping bunnies need); maps 2-5 from the four directions
 // perpendicular to that axis. A ray uses the map whose camera looks most nearly along it.
+//
+// Self-reflections (the paper's §6 open problem: a concave reflector, the bunny's ears, reflects
+// itself): with `self_maps` > 0, every non-planar reflector also gets that many maps of itself,
+// storing its normal instead of a colour; rays leaving a reflector search its own maps and
+// reflect off what they hit. Their axis is the scene camera's direction to the reflector (map 0
+// sees what the viewer sees), with the same six directions.
 #pragma once
 
 #include <vector>
@@ -20,21 +26,24 @@ struct DepthMapOptions {
   int size = 256;             // w: texels per side
   float fov_degrees = 20.0f;  // the depth-map camera's field of view
   int maps = 1;               // depth maps per object (1..6)
+  int self_maps = 0;          // depth maps per non-planar reflector of itself (0..6)
 };
 
 struct DepthMapSpec {
   int instance = -1;
-  int index = 0;  // among its object's maps
+  int index = 0;          // among its object's maps
+  bool reflector = false;  // a reflector's map of itself: normals, not colours
   // The camera in the object's space: it frames the mesh's bounding sphere (centre, radius)
   // from `from` (unit, from the centre towards the camera), with `up`.
   vec3 centre{0.0f}, from{0.0f, 0.0f, 1.0f}, up{0.0f, 1.0f, 0.0f};
   float radius = 1.0f;
 };
 
-// The non-planar diffuse instances, each with options.maps specs (consecutive).
+// The non-planar diffuse instances, each with options.maps specs, then the non-planar
+// reflectors with options.self_maps (an instance's specs are consecutive).
 std::vector<DepthMapSpec> placeDepthMaps(const Scene& scene, const DepthMapOptions& options);
 
-// The instances that have depth maps, once each.
+// The diffuse instances that have depth maps (and so no billboards), once each.
 std::vector<int> depthMappedInstances(const std::vector<DepthMapSpec>& specs);
 
 // The camera of `spec` with its object placed by `model`: near and far planes enclose the

@@ -10,9 +10,14 @@
 //   // The nearest hit of its impostors along the ray with t_min < t < t_best, for rays leaving
 //   // reflector `from` (0-based): lowers t_best, sets `end` (what the path's end looks up) and
 //   // returns true; false leaves both. dox..ddy: the ray differential, for the footprint.
-//   bool impostor_extra_hit(vec3 origin, vec3 dir, int from, float t_min, inout float t_best,
-//                           vec3 dox, vec3 doy, vec3 ddx, vec3 ddy, out vec4 end);
-//   // The radiance at a path's end that impostor_extra_hit found.
+//   // `reflective`: whether reflecting impostors may be hit (as for reflective billboards).
+//   bool impostor_extra_hit(vec3 origin, vec3 dir, int from, bool reflective, float t_min,
+//                           inout float t_best, vec3 dox, vec3 doy, vec3 ddx, vec3 ddy,
+//                           out vec4 end);
+//   // Whether the end found is a reflecting surface; if so its world normal there, its material
+//   // and the reflector (0-based) the reflected ray leaves.
+//   bool impostor_extra_reflects(vec4 end, out vec3 normal, out int material, out int leaves);
+//   // The radiance at a path's end that impostor_extra_hit found (not a reflecting one).
 //   vec3 impostor_extra_radiance(vec4 end);
 #include "render/shaders/reflector.glsl"
 #include "methods/impostor/billboard_shared.h"
@@ -94,7 +99,8 @@ vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflecto
     int hit = nearest_billboard(origin, dir, range.x, range.y + (reflective ? range.w : 0), t_min,
                                 t, uv);
     vec4 extra_end = vec4(0.0f);
-    bool extra = impostor_extra_hit(origin, dir, from, t_min, t, dox, doy, ddx, ddy, extra_end);
+    bool extra =
+        impostor_extra_hit(origin, dir, from, reflective, t_min, t, dox, doy, ddx, ddy, extra_end);
     if (extra) hit = -1;
     // The ground box, if nearer than every billboard: the ground billboard through its floor,
     // the morph on a wall, the environment through the open top.
@@ -123,29 +129,40 @@ vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflecto
                                 u_morph_max.y - u_morph_min.y);
       break;
     }
+    // A reflecting surface: its normal and point, the material and the reflector left next.
+    vec3 n = vec3(0.0f), p = vec3(0.0f);
+    int material = -1, leaves = -1;
     if (extra) {
-      end_extra = extra_end;
-      ended_extra = true;
-      break;
-    }
-    if (hit < 0) break;
-    BillboardData b = billboards[hit];
-    if (b.info.x == MIRAGE_BILLBOARD_DIFFUSE) {
-      end_layer = float(b.info.y);
-      end_uv = uv;
-      end_dx = billboard_uv_differential(b, dir, t, dox, ddx);
-      end_dy = billboard_uv_differential(b, dir, t, doy, ddy);
-      break;
+      if (!impostor_extra_reflects(extra_end, n, material, leaves)) {
+        end_extra = extra_end;
+        ended_extra = true;
+        break;
+      }
+      p = origin + t * dir;
+    } else {
+      if (hit < 0) break;
+      BillboardData b = billboards[hit];
+      if (b.info.x == MIRAGE_BILLBOARD_DIFFUSE) {
+        end_layer = float(b.info.y);
+        end_uv = uv;
+        end_dx = billboard_uv_differential(b, dir, t, dox, ddx);
+        end_dy = billboard_uv_differential(b, dir, t, doy, ddy);
+        break;
+      }
+      material = b.info.w;
+      leaves = b.info.z;
+      if (bounce < order) {
+        n = normalize(textureLod(u_billboard_surface, vec3(uv, float(b.info.y)), 0.0f).xyz);
+        p = textureLod(u_billboard_position, vec3(uv, b.corner.w), 0.0f).xyz;
+      }
     }
     if (bounce == order) {
-      end_reflector = b.info.w;  // no bounce left: the reflector's base colour
+      end_reflector = material;  // no bounce left: the reflector's base colour
       break;
     }
-    // A reflective billboard: continue from its surface point, about its normal.
-    vec3 n = normalize(textureLod(u_billboard_surface, vec3(uv, float(b.info.y)), 0.0f).xyz);
-    vec3 p = textureLod(u_billboard_position, vec3(uv, b.corner.w), 0.0f).xyz;
+    // Continue from the reflecting surface's point, about its normal.
     if (dot(n, dir) > 0.0f) n = -n;
-    pending = b.info.w;
+    pending = material;
     pending_cos = max(dot(n, -dir), 0.0f);
     // The differential travels with the ray; a curved reflector spreads it further, which this
     // first-order transfer ignores (the lookup is then sharper than the ray tracer's average).
@@ -154,7 +171,7 @@ vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflecto
     origin = p + n * t_min;
     dir = reflect(dir, n);
     env_dir = dir;
-    from = b.info.z;
+    from = leaves;
   }
   // The path's end, looked up once, at the level of the footprint (isotropic, as textureGrad
   // on llvmpipe, at a fraction of its cost): a cube texel spans about (pi / 2) / size radians
