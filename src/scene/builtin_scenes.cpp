@@ -7,7 +7,6 @@ namespace mirage {
 
 namespace {
 
-
 quat rotationX(float degrees) {
   return glm::angleAxis(radians(degrees), vec3(1, 0, 0));
 }
@@ -86,7 +85,8 @@ Scene teapotSphere() {
   addCheckerFloor(s, 16.0f);
   int teapot = addMesh(s, procedural::teapotLike());
   int purple = addMaterial(s, Material::diffuse("purple", {0.55f, 0.25f, 0.7f}));
-  addInstance(s, "teapot", teapot, purple, placeAt({-1.25f, 0.0f, 0.3f}, vec3(1.2f), rotationY(-30)));
+  addInstance(s, "teapot", teapot, purple,
+              placeAt({-1.25f, 0.0f, 0.3f}, vec3(1.2f), rotationY(-30)));
   int torus = addMesh(s, procedural::torus(0.45f, 0.16f, 64, 32));
   int orange = addMaterial(s, Material::diffuse("orange", {0.95f, 0.5f, 0.1f}));
   Transform standing = placeAt({1.3f, 0.62f, 0.2f});
@@ -113,10 +113,12 @@ Scene mirrorTorus() {
   addCheckerFloor(s, 16.0f);
   int teapot = addMesh(s, procedural::teapotLike());
   int purple = addMaterial(s, Material::diffuse("purple", {0.55f, 0.25f, 0.7f}));
-  addInstance(s, "teapot", teapot, purple, placeAt({-1.6f, 0.0f, 0.9f}, vec3(1.2f), rotationY(-30)));
+  addInstance(s, "teapot", teapot, purple,
+              placeAt({-1.6f, 0.0f, 0.9f}, vec3(1.2f), rotationY(-30)));
   int torus = addMesh(s, procedural::torus(0.9f, 0.35f, 96, 48));
   int mirror = addMaterial(s, Material::mirror("mirror"));
-  addInstance(s, "mirror-torus", torus, mirror, placeAt({0.3f, 1.25f, -0.4f}, vec3(1.0f), rotationY(20)));
+  addInstance(s, "mirror-torus", torus, mirror,
+              placeAt({0.3f, 1.25f, -0.4f}, vec3(1.0f), rotationY(20)));
   CameraDesc cam;
   cam.name = "main";
   cam.position = {1.2f, 1.9f, 3.0f};
@@ -253,13 +255,16 @@ const BuiltinMaker* findBuiltin(const std::string& name) {
 const std::vector<BuiltinSceneInfo>& builtinScenes() {
   static const std::vector<BuiltinSceneInfo> scenes = [] {
     std::vector<BuiltinSceneInfo> v;
-    for (const BuiltinMaker& b : kBuiltins) v.push_back({b.name, makeBuiltinScene(b.name).description});
+    for (const BuiltinMaker& b : kBuiltins)
+      v.push_back({b.name, makeBuiltinScene(b.name).description});
     return v;
   }();
   return scenes;
 }
 
-bool isBuiltinScene(const std::string& name) { return findBuiltin(name) != nullptr; }
+bool isBuiltinScene(const std::string& name) {
+  return findBuiltin(name) != nullptr;
+}
 
 Scene makeBuiltinScene(const std::string& name, const SceneOptions& options) {
   const BuiltinMaker* maker = findBuiltin(name);

@@ -215,8 +215,7 @@ TEST_F(DepthMapImages, GpuSrdmBuilderGivesTheCpuBuildersImage) {
   const View view(scene.camera(), size);
   auto frame = [&](const char* builder, int maps) {
     auto m = renderer.createMethod(
-        "depthmap", {{"srdm-builder", builder}, {"depthmap-maps", std::to_string(maps)}},
-        settings);
+        "depthmap", {{"srdm-builder", builder}, {"depthmap-maps", std::to_string(maps)}}, settings);
     renderer.render(*m, view, 0.0f, settings);
     EXPECT_EQ(m->stats().at("srdm_builds"), 2.0 * maps) << builder;
     return renderer.read().color;

@@ -27,9 +27,10 @@ DepthMapCapture::DepthMapCapture(const DepthMapOptions& options, const SrdmSetti
   checkSrdmSettings(options.size, srdm);
   if (builder == SrdmBuilder::kGpu) {
     if (srdm.simplifier != SrdmSimplifier::kGreedy)
-      throwInput("--srdm-builder gpu with --srdm-simplify {}: the GPU builder runs only the "
-                 "greedy simplifier (allowed: --srdm-simplify greedy, or --srdm-builder cpu)",
-                 srdmSimplifierName(srdm.simplifier));
+      throwInput(
+          "--srdm-builder gpu with --srdm-simplify {}: the GPU builder runs only the "
+          "greedy simplifier (allowed: --srdm-simplify greedy, or --srdm-builder cpu)",
+          srdmSimplifierName(srdm.simplifier));
     gpu_builder_ = std::make_unique<SrdmGpuBuilder>();
   }
 }

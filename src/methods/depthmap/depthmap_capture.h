@@ -4,8 +4,9 @@
 // nothing; the colour depends on the light as the object sees it (its direction in the object's
 // space, colour, ambient), so a light change — or a rotation relative to the light — re-captures
 // the colour alone. A reflector's map of itself holds its object-space normal instead, which
-// nothing but its depth's changes invalidate. The SRDMs are built on the CPU from the depth read back (the default: the
-// faster here), or on the GPU straight from the depth array by SrdmGpuBuilder (greedy only).
+// nothing but its depth's changes invalidate. The SRDMs are built on the CPU from the depth read
+// back (the default: the faster here), or on the GPU straight from the depth array by
+// SrdmGpuBuilder (greedy only).
 #pragma once
 
 #include <memory>

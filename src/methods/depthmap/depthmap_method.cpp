@@ -36,9 +36,9 @@ class DepthMapMethod final : public Method {
         srdm_(srdmSettings(setup.params)),
         specs_(placeDepthMaps(setup.gpu.scene(), options_)),
         stage_(stageOptions(setup.params, specs_)),
-        capture_(options_, srdm_,
-                 setup.params.text("srdm-builder") == "gpu" ? SrdmBuilder::kGpu
-                                                            : SrdmBuilder::kCpu),
+        capture_(
+            options_, srdm_,
+            setup.params.text("srdm-builder") == "gpu" ? SrdmBuilder::kGpu : SrdmBuilder::kCpu),
         last_bounce_reflective_(setup.params.text("last-bounce") == "all"),
         linear_(setup.params.text("depthmap-search") == "linear"),
         rows_(setup.params.integer("srdm-rows")),
@@ -110,8 +110,8 @@ class DepthMapMethod final : public Method {
 
  private:
   static std::vector<std::string> shaderDefines(const std::vector<DepthMapSpec>& specs) {
-    const bool self = std::any_of(specs.begin(), specs.end(),
-                                  [](const DepthMapSpec& s) { return s.reflector; });
+    const bool self =
+        std::any_of(specs.begin(), specs.end(), [](const DepthMapSpec& s) { return s.reflector; });
     return self ? std::vector<std::string>{"DEPTHMAP_SELF"} : std::vector<std::string>{};
   }
 

@@ -31,7 +31,7 @@ struct DepthMapOptions {
 
 struct DepthMapSpec {
   int instance = -1;
-  int index = 0;          // among its object's maps
+  int index = 0;           // among its object's maps
   bool reflector = false;  // a reflector's map of itself: normals, not colours
   // The camera in the object's space: it frames the mesh's bounding sphere (centre, radius)
   // from `from` (unit, from the centre towards the camera), with `up`.
