@@ -7,6 +7,16 @@ namespace mirage {
 
 namespace {
 
+// The scene's camera "main", looking from `position` at `target`.
+void addMainCamera(Scene& s, vec3 position, vec3 target, float fov_y_degrees) {
+  CameraDesc cam;
+  cam.name = "main";
+  cam.position = position;
+  cam.target = target;
+  cam.fov_y_degrees = fov_y_degrees;
+  s.cameras.push_back(cam);
+}
+
 quat rotationX(float degrees) {
   return glm::angleAxis(radians(degrees), vec3(1, 0, 0));
 }
@@ -32,12 +42,7 @@ Scene sphereOverChecker() {
   int sphere = addMesh(s, procedural::sphere(1.0f, 128, 64));
   int mirror = addMaterial(s, Material::mirror("mirror"));
   addInstance(s, "mirror-sphere", sphere, mirror, placeAt({0.0f, 1.25f, 0.0f}));
-  CameraDesc cam;
-  cam.name = "main";
-  cam.position = {0.0f, 2.6f, 6.5f};
-  cam.target = {0.0f, 1.0f, 0.0f};
-  cam.fov_y_degrees = 45.0f;
-  s.cameras.push_back(cam);
+  addMainCamera(s, {0.0f, 2.6f, 6.5f}, {0.0f, 1.0f, 0.0f}, 45.0f);
   return s;
 }
 
@@ -67,12 +72,7 @@ Scene spheres9(const SceneOptions& options) {
     for (int col = 0; col < 3 && n < count; ++col, ++n)
       addInstance(s, fmt::format("mirror-sphere-{}", n + 1), sphere, mirror,
                   placeAt({2.2f * float(col - 1), 0.7f, 2.2f * float(row - 1)}));
-  CameraDesc cam;
-  cam.name = "main";
-  cam.position = {0.0f, 5.2f, 8.6f};
-  cam.target = {0.0f, 0.4f, 0.0f};
-  cam.fov_y_degrees = 45.0f;
-  s.cameras.push_back(cam);
+  addMainCamera(s, {0.0f, 5.2f, 8.6f}, {0.0f, 0.4f, 0.0f}, 45.0f);
   return s;
 }
 
@@ -96,12 +96,7 @@ Scene teapotSphere() {
   int sphere = addMesh(s, procedural::sphere(1.0f, 128, 64));
   int mirror = addMaterial(s, Material::mirror("mirror"));
   addInstance(s, "mirror-sphere", sphere, mirror, placeAt({0.0f, 1.0f, -0.8f}));
-  CameraDesc cam;
-  cam.name = "main";
-  cam.position = {0.0f, 1.7f, 4.6f};
-  cam.target = {0.0f, 0.8f, -0.3f};
-  cam.fov_y_degrees = 40.0f;
-  s.cameras.push_back(cam);
+  addMainCamera(s, {0.0f, 1.7f, 4.6f}, {0.0f, 0.8f, -0.3f}, 40.0f);
   return s;
 }
 
@@ -119,12 +114,7 @@ Scene mirrorTorus() {
   int mirror = addMaterial(s, Material::mirror("mirror"));
   addInstance(s, "mirror-torus", torus, mirror,
               placeAt({0.3f, 1.25f, -0.4f}, vec3(1.0f), rotationY(20)));
-  CameraDesc cam;
-  cam.name = "main";
-  cam.position = {1.2f, 1.9f, 3.0f};
-  cam.target = {0.3f, 1.2f, -0.4f};
-  cam.fov_y_degrees = 40.0f;
-  s.cameras.push_back(cam);
+  addMainCamera(s, {1.2f, 1.9f, 3.0f}, {0.3f, 1.2f, -0.4f}, 40.0f);
   return s;
 }
 
@@ -147,12 +137,7 @@ Scene mirrorRoom() {
   int red = addMaterial(s, Material::diffuse("red", {0.85f, 0.2f, 0.15f}));
   addInstance(s, "teapot", teapot, red, placeAt({0.2f, 1.0f, -1.0f}, vec3(0.8f), rotationY(-30)));
   addBox(s, "green-box", {-2.2f, 0.4f, -0.2f}, vec3(0.4f), {0.2f, 0.7f, 0.25f}, 25.0f);
-  CameraDesc cam;
-  cam.name = "main";
-  cam.position = {2.4f, 2.1f, 3.4f};
-  cam.target = {-0.6f, 1.3f, -2.0f};
-  cam.fov_y_degrees = 55.0f;
-  s.cameras.push_back(cam);
+  addMainCamera(s, {2.4f, 2.1f, 3.4f}, {-0.6f, 1.3f, -2.0f}, 55.0f);
   return s;
 }
 
@@ -181,12 +166,7 @@ Scene twoMirrors() {
   int column = addMesh(s, procedural::cylinder(0.2f, 1.4f));
   int yellow = addMaterial(s, Material::diffuse("yellow", {0.9f, 0.8f, 0.15f}));
   addInstance(s, "column", column, yellow, placeAt({-1.0f, 0.0f, 0.7f}));
-  CameraDesc cam;
-  cam.name = "main";
-  cam.position = {2.3f, 1.8f, 3.0f};
-  cam.target = {-3.0f, 1.1f, -1.2f};
-  cam.fov_y_degrees = 55.0f;
-  s.cameras.push_back(cam);
+  addMainCamera(s, {2.3f, 1.8f, 3.0f}, {-3.0f, 1.1f, -1.2f}, 55.0f);
   return s;
 }
 
