@@ -7,6 +7,7 @@
 #include "methods/billboard/billboard_method.h"
 #include "methods/depthmap/depthmap_method.h"
 #include "methods/envmap/envmap_method.h"
+#include "methods/hybrid/hybrid_method.h"
 #include "methods/method.h"
 #include "methods/none/none_method.h"
 #include "methods/raytrace/raytrace_method.h"
@@ -17,7 +18,7 @@ const std::vector<MethodEntry>& methodRegistry() {
   static const std::vector<MethodEntry> registry = {
       noneMethodEntry(),      envmapInfiniteMethodEntry(), envmapMethodEntry(),
       envmapBoxMethodEntry(), billboardMethodEntry(),      depthmapMethodEntry(),
-      raytraceMethodEntry(),
+      hybridMethodEntry(),         raytraceMethodEntry(),
   };
   return registry;
 }

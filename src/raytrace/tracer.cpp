@@ -77,18 +77,7 @@ RayTracer::SurfacePoint RayTracer::surface(const RayHit& hit, bool reflector) co
 }
 
 vec3 RayTracer::sampleTexture(int texture, vec2 uv) const {
-  const Image& img = scene_.textures[size_t(texture)].image;
-  // Bilinear, repeating, level 0 (the GPU's level 0 with GL_REPEAT).
-  float x = uv.x * float(img.width()) - 0.5f, y = (1.0f - uv.y) * float(img.height()) - 0.5f;
-  int x0 = int(std::floor(x)), y0 = int(std::floor(y));
-  float fx = x - float(x0), fy = y - float(y0);
-  auto at = [&](int xi, int yi) {
-    xi = ((xi % img.width()) + img.width()) % img.width();
-    yi = ((yi % img.height()) + img.height()) % img.height();
-    return vec3(img(xi, yi));
-  };
-  return glm::mix(glm::mix(at(x0, y0), at(x0 + 1, y0), fx),
-                  glm::mix(at(x0, y0 + 1), at(x0 + 1, y0 + 1), fx), fy);
+  return mirage::sampleTexture(scene_.textures[size_t(texture)].image, uv);
 }
 
 template <bool kReference>

@@ -1,6 +1,7 @@
 #include "scene/scene.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/error.h"
 
@@ -98,6 +99,33 @@ void Scene::ensureCamera() {
   CameraDesc c = frameBounds(b.center(), std::max(b.radius(), 1e-3f), vec3(0.3f, 0.45f, 1.0f));
   c.name = "auto";
   cameras.push_back(c);
+}
+
+bool isPlanarInstance(const Scene& scene, int instance, const mat4& model, vec3* normal) {
+  const Bounds3 b = scene.meshes[size_t(scene.instances[size_t(instance)].mesh)].bounds();
+  if (b.empty()) return false;
+  const vec3 e = b.extent();
+  const int thin = e.x <= e.y && e.x <= e.z ? 0 : (e.y <= e.z ? 1 : 2);
+  if (!(e[thin] <= 1e-4f * std::max({e.x, e.y, e.z}))) return false;
+  if (normal) {
+    vec3 axis(0.0f);
+    axis[thin] = 1.0f;
+    *normal = glm::normalize(normalMatrix(model) * axis);
+  }
+  return true;
+}
+
+vec3 sampleTexture(const Image& img, vec2 uv) {
+  float x = uv.x * float(img.width()) - 0.5f, y = (1.0f - uv.y) * float(img.height()) - 0.5f;
+  int x0 = int(std::floor(x)), y0 = int(std::floor(y));
+  float fx = x - float(x0), fy = y - float(y0);
+  auto at = [&](int xi, int yi) {
+    xi = ((xi % img.width()) + img.width()) % img.width();
+    yi = ((yi % img.height()) + img.height()) % img.height();
+    return vec3(img(xi, yi));
+  };
+  return glm::mix(glm::mix(at(x0, y0), at(x0 + 1, y0), fx),
+                  glm::mix(at(x0, y0 + 1), at(x0 + 1, y0 + 1), fx), fy);
 }
 
 }  // namespace mirage

@@ -80,4 +80,12 @@ struct Scene {
   void ensureCamera();
 };
 
+// The instance's mesh is flat (its thinnest bounds extent below 1e-4 of its largest): then
+// `normal` receives its world-space plane normal under `model`.
+bool isPlanarInstance(const Scene& scene, int instance, const mat4& model, vec3* normal = nullptr);
+
+// A texture's value at `uv`: bilinear, repeating, level 0 (what the GPU samples at level 0 with
+// GL_REPEAT; the image's row 0 is at v = 1).
+vec3 sampleTexture(const Image& image, vec2 uv);
+
 }  // namespace mirage

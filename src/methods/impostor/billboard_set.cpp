@@ -45,20 +45,6 @@ BillboardSpec volumeBillboard(const vec3& centre, float radius, const vec3& view
 
 }  // namespace
 
-bool isPlanarInstance(const Scene& scene, int instance, const mat4& model, vec3* normal) {
-  const Bounds3 b = scene.meshes[size_t(scene.instances[size_t(instance)].mesh)].bounds();
-  if (b.empty()) return false;
-  const vec3 e = b.extent();
-  const int thin = e.x <= e.y && e.x <= e.z ? 0 : (e.y <= e.z ? 1 : 2);
-  if (!(e[thin] <= 1e-4f * std::max({e.x, e.y, e.z}))) return false;
-  if (normal) {
-    vec3 axis(0.0f);
-    axis[thin] = 1.0f;
-    *normal = glm::normalize(normalMatrix(model) * axis);
-  }
-  return true;
-}
-
 BillboardSet placeBillboards(const Scene& scene, float time, const BillboardSetOptions& options) {
   BillboardSet set;
   const std::vector<int> reflectors = scene.reflectorInstances();

@@ -65,10 +65,6 @@ struct BillboardSet {
   std::vector<shading::BillboardData> gpuData(const Scene& scene) const;
 };
 
-// The instance's mesh is flat (its thinnest bounds extent below 1e-4 of its largest): then
-// `normal` receives its world-space plane normal.
-bool isPlanarInstance(const Scene& scene, int instance, const mat4& model, vec3* normal = nullptr);
-
 // The billboards of `scene` with its instances placed at `time`.
 BillboardSet placeBillboards(const Scene& scene, float time, const BillboardSetOptions& options);
 

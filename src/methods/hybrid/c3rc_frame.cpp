@@ -1,0 +1,124 @@
+#include "methods/hybrid/c3rc_frame.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include "core/timer.h"
+
+namespace mirage {
+
+namespace {
+
+// The longest run of points one work item covers (a longer one would leave the GPU's other
+// workgroups idle).
+constexpr uint32_t kMaxItemPoints = 4096;
+
+struct TriangleRef {
+  int reflector;  // index into `reflectors`
+  uint32_t triangle;
+};
+
+bool finite(const vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+struct Local {
+  std::vector<ivec4> items;
+  std::vector<uint32_t> leaves;
+  CullCounters cull;
+  long long degenerate = 0, multiple = 0, points = 0;
+};
+
+}  // namespace
+
+C3rcFrame buildC3rcFrame(const Scene& scene, const std::vector<int>& reflectors,
+                         const std::vector<std::vector<uint32_t>>& pixels,
+                         const std::vector<mat4>& matrices, const vec3& eye,
+                         const PointStore& points, const C3rcFrameOptions& options) {
+  Stopwatch watch;
+  C3rcFrame frame;
+  std::vector<TriangleRef> triangles;
+  for (size_t r = 0; r < reflectors.size(); ++r)
+    for (uint32_t t = 0; t < uint32_t(pixels[r].size()); ++t) {
+      if (pixels[r][t] == 0) continue;
+      ++frame.visible_triangles;
+      if (int(pixels[r][t]) < options.min_pixels)
+        ++frame.small_triangles;
+      else
+        triangles.push_back({int(r), t});
+    }
+  // Each cloud's world -> object map: the query moves, the tree stays.
+  std::vector<mat4> to_object;
+  for (const PointCloud& c : points.clouds())
+    to_object.push_back(glm::inverse(matrices[size_t(c.points.instance)]));
+
+  frame.c3rcs.resize(triangles.size());
+  tbb::enumerable_thread_specific<Local> locals;
+  tbb::parallel_for(size_t(0), triangles.size(), [&](size_t i) {
+    Local& local = locals.local();
+    const TriangleRef ref = triangles[i];
+    const int instance = reflectors[size_t(ref.reflector)];
+    const mat4& model = matrices[size_t(instance)];
+    const mat3 normal_matrix = normalMatrix(model);
+    const Mesh& mesh = scene.meshes[size_t(scene.instances[size_t(instance)].mesh)];
+    const uvec3 tri = mesh.triangles[ref.triangle];
+    vec3 v[3], n[3];
+    for (int k = 0; k < 3; ++k) {
+      v[k] = vec3(model * vec4(mesh.positions[tri[k]], 1.0f));
+      n[k] = normal_matrix * mesh.normals[tri[k]];
+    }
+    const float area2 = glm::length(glm::cross(v[1] - v[0], v[2] - v[0]));
+    bool ok = area2 > 1e-12f && std::isfinite(area2);
+    for (int k = 0; k < 3 && ok; ++k)
+      ok = finite(v[k]) && finite(n[k]) && glm::dot(n[k], n[k]) > 0.0f;
+    if (!ok) {
+      ++local.degenerate;
+      frame.c3rcs[i] = C3rcData{};  // never referenced by an item
+      return;
+    }
+    const C3rcData c = reflectorC3rc(eye, v, n, options.reach, options.eye_scaled);
+    frame.c3rcs[i] = c;
+    if (int(c.info.z) & MIRAGE_C3RC_MULTIPLE) ++local.multiple;
+    for (size_t k = 0; k < points.clouds().size(); ++k) {
+      const PointCloud& cloud = points.clouds()[k];
+      local.leaves.clear();
+      cullLeaves(cloud.tree, transformC3rc(c, to_object[k]), options.culling, local.leaves,
+                 local.cull);
+      // Leaves are contiguous ranges of the cloud: neighbours merge into one longer item, which
+      // the splatting shader runs with fewer idle invocations.
+      std::sort(local.leaves.begin(), local.leaves.end(), [&](uint32_t a, uint32_t b) {
+        return cloud.tree.nodes()[a].begin < cloud.tree.nodes()[b].begin;
+      });
+      uint32_t run_begin = 0, run_end = 0;
+      auto flush = [&] {
+        if (run_end == run_begin) return;
+        local.items.push_back(
+            ivec4(int(i), int(cloud.offset + run_begin), int(run_end - run_begin), 0));
+        local.points += run_end - run_begin;
+      };
+      for (uint32_t leaf : local.leaves) {
+        const KdNode& node = cloud.tree.nodes()[leaf];
+        if (node.begin != run_end || run_end - run_begin >= kMaxItemPoints) {
+          flush();
+          run_begin = node.begin;
+        }
+        run_end = node.end;
+      }
+      flush();
+    }
+  });
+  for (Local& local : locals) {
+    frame.items.insert(frame.items.end(), local.items.begin(), local.items.end());
+    frame.cull += local.cull;
+    frame.degenerate_triangles += local.degenerate;
+    frame.multiple_c3rcs += local.multiple;
+    frame.points_to_project += local.points;
+  }
+  frame.ms = watch.ms();
+  return frame;
+}
+
+}  // namespace mirage

@@ -1,0 +1,42 @@
+// The backward phase of one frame (the hybrid paper, §3.2 and §5): a C3RC for every reflector
+// triangle that shows at least `min_pixels` pixels, each culled against every point cloud's
+// kd-tree (in the cloud's object space), giving the work items of the splatting pass — one per
+// (C3RC, surviving leaf). Runs on the CPU over TBB.
+#pragma once
+
+#include <vector>
+
+#include "core/camera.h"
+#include "methods/hybrid/c3rc_cull.h"
+#include "methods/hybrid/point_store.h"
+#include "scene/scene.h"
+
+namespace mirage {
+
+struct C3rcFrameOptions {
+  int min_pixels = 1;  // reflector triangles with fewer visible pixels show the environment
+  Culling culling = Culling::kExact;
+  float reach = 1.0f;      // the largest reflector-to-point distance worth searching
+  bool eye_scaled = true;  // construction rays scaled by the eye distance (else unit: the paper)
+};
+
+struct C3rcFrame {
+  std::vector<C3rcData> c3rcs;         // world space
+  std::vector<ivec4> items;            // C3RC, first point (shared buffer), point count, 0
+  long long visible_triangles = 0;     // triangles with at least one visible pixel
+  long long small_triangles = 0;       // visible, but below min_pixels: environment instead
+  long long degenerate_triangles = 0;  // zero area or non-finite: skipped
+  long long multiple_c3rcs = 0;        // C3RCs whose sidedness allows a second projection
+  long long points_to_project = 0;     // Σ over items of their point counts
+  CullCounters cull;
+  double ms = 0.0;  // wall time of the whole phase
+};
+
+// `pixels[r][t]`: visible pixels of triangle t of reflector instance `reflectors[r]`;
+// `matrices`: every instance's current transform.
+C3rcFrame buildC3rcFrame(const Scene& scene, const std::vector<int>& reflectors,
+                         const std::vector<std::vector<uint32_t>>& pixels,
+                         const std::vector<mat4>& matrices, const vec3& eye,
+                         const PointStore& points, const C3rcFrameOptions& options);
+
+}  // namespace mirage

@@ -1,0 +1,32 @@
+// Method `hybrid`: the reflector pass after the splats (the hybrid paper, §6–7). A pixel that a
+// point reached shows that point, shaded with the shared diffuse model at its current place;
+// any other pixel shows the background: the reflector's cube map of the scene without the
+// point-sampled objects. Fresnel and distance attenuation come from the shared reflector main.
+#include "render/shaders/reflector.glsl"
+#include "methods/hybrid/hybrid_shared.h"
+
+layout(std430, binding = MIRAGE_BIND_HYBRID_POINTS) readonly buffer PointBlock {
+  PointData points[];
+};
+layout(std430, binding = MIRAGE_BIND_HYBRID_SPLATS) readonly buffer SplatBlock { uint splats[]; };
+layout(binding = MIRAGE_UNIT_HYBRID_PROBES) uniform samplerCubeArray u_probes;
+
+uniform int u_index_bits;
+
+vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflector) {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  uint key = splats[pixel.y * int(frame.viewport.x) + pixel.x];
+  if (key != MIRAGE_HYBRID_EMPTY) {
+    PointData p = points[hybrid_splat_index(key, u_index_bits)];
+    InstanceData inst = instances[int(p.position.w)];
+    vec3 q = (inst.model * vec4(p.position.xyz, 1.0f)).xyz;
+    vec3 n = normalize(mat3(inst.normal_matrix) * p.normal.xyz);
+    vec3 color = shade_diffuse(p.albedo.rgb, n, frame.light_dir.xyz, frame.light_color.rgb,
+                               frame.ambient.rgb);
+    return vec4(color, length(q - position));
+  }
+  vec4 coords = vec4(direction, float(reflector - 1));
+  vec4 level0 = textureLod(u_probes, coords, 0.0f);
+  vec3 color = frame.options.y != 0 ? textureGrad(u_probes, coords, g_dRdx, g_dRdy).rgb : level0.rgb;
+  return vec4(color, level0.a);
+}

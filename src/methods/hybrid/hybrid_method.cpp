@@ -1,0 +1,318 @@
+#include "methods/hybrid/hybrid_method.h"
+
+#include <algorithm>
+
+#include "core/timer.h"
+#include "gpu/buffer.h"
+#include "methods/hybrid/c3rc_frame.h"
+#include "methods/hybrid/hybrid_shared.h"
+#include "methods/hybrid/point_store.h"
+#include "render/cube_capture.h"
+
+namespace mirage {
+
+namespace {
+
+Culling parseCulling(const std::string& text) {
+  if (text == "none") return Culling::kNone;
+  if (text == "hull") return Culling::kHull;
+  return Culling::kExact;
+}
+
+PointSetOptions pointOptions(const ParamValues& params) {
+  PointSetOptions o;
+  o.total = params.integer("points");
+  return o;
+}
+
+KdTreeOptions treeOptions(const ParamValues& params) {
+  KdTreeOptions o;
+  o.leaf_points = params.integer("kd-leaf-points");
+  o.min_size = float(params.real("kd-min-size"));
+  return o;
+}
+
+class HybridMethod final : public Method {
+ public:
+  explicit HybridMethod(const MethodSetup& setup)
+      : info_(setup.info),
+        store_(setup.gpu.scene(), pointOptions(setup.params), treeOptions(setup.params)),
+        culling_(parseCulling(setup.params.text("hybrid-culling"))),
+        first_only_(setup.params.text("hybrid-projections") == "first"),
+        eye_scaled_(setup.params.text("c3rc-rays") == "eye"),
+        splat_size_(setup.params.integer("splat-size")),
+        min_pixels_(setup.params.integer("hybrid-min-pixels")),
+        probe_size_(setup.params.integer("envmap-size")),
+        index_bits_(shading::hybrid_index_bits(uint32_t(std::max<size_t>(store_.pointCount(), 1)))),
+        splat_program_(gpu::Program::compute("methods/hybrid/hybrid_splat.comp")),
+        resolve_program_(
+            gpu::Program::graphics("render/shaders/scene.vert", "methods/hybrid/hybrid.frag")),
+        id_program_(
+            gpu::Program::graphics("render/shaders/scene.vert", "methods/hybrid/triangle_id.frag")),
+        base_program_(
+            gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")) {
+    const Scene& scene = setup.gpu.scene();
+    reflectors_ = scene.reflectorInstances();
+    for (int i = 0; i < int(scene.instances.size()); ++i)
+      if (!scene.isReflector(i) && !isPointSampled(i)) background_.push_back(i);
+  }
+
+  const MethodInfo& info() const override { return info_; }
+
+  void update(FrameContext& frame) override {
+    if (captured_ && captured_version_ == frame.gpu.version() &&
+        captured_mip_ == frame.settings.mip)
+      return;
+    captureBackground(frame);
+    captured_ = true;
+    captured_version_ = frame.gpu.version();
+    captured_mip_ = frame.settings.mip;
+  }
+
+  void render(FrameContext& frame) override {
+    frame.passes.drawDirect();
+    frame.beginPart(gpu::Part::kReflect);
+    if (frame.settings.order == 0 || reflectors_.empty()) {
+      frame.passes.drawReflectors(base_program_);
+      return;
+    }
+    Stopwatch visibility;
+    std::vector<std::vector<uint32_t>> pixels = visiblePixels(frame);
+    visibility_ms_ = visibility.ms();
+
+    std::vector<mat4> matrices;
+    for (int i = 0; i < int(frame.gpu.scene().instances.size()); ++i)
+      matrices.push_back(frame.gpu.instanceMatrix(i));
+    C3rcFrameOptions options;
+    options.min_pixels = min_pixels_;
+    options.culling = culling_;
+    options.eye_scaled = eye_scaled_;
+    options.reach = reach(frame);
+    last_ = buildC3rcFrame(frame.gpu.scene(), reflectors_, pixels, matrices, frame.view.eye(),
+                           store_, options);
+    splat(frame, options.reach);
+
+    probes_.bind(MIRAGE_UNIT_HYBRID_PROBES);
+    resolve_program_.set("u_index_bits", index_bits_);
+    glDepthFunc(GL_LEQUAL);  // the visibility pass left the reflectors' depth
+    frame.passes.drawReflectors(resolve_program_);
+    glDepthFunc(GL_LESS);
+  }
+
+  int orderRendered(int requested) const override { return std::min(requested, 1); }
+
+  std::map<std::string, double> stats() const override {
+    std::map<std::string, double> s;
+    s["points"] = double(store_.pointCount());
+    s["point_sets"] = double(store_.clouds().size());
+    s["point_sample_ms"] = store_.sampleMs();
+    s["kd_build_ms"] = store_.buildMs();
+    s["kd_leaves"] = double(store_.leafCount());
+    s["kd_average_depth"] = store_.averageLeafDepth();
+    s["kd_points_per_leaf"] = store_.pointsPerLeaf();
+    s["c3rcs"] = double(last_.c3rcs.size() - size_t(last_.degenerate_triangles));
+    s["c3rcs_multiple"] = double(last_.multiple_c3rcs);
+    s["reflector_triangles_visible"] = double(last_.visible_triangles);
+    s["reflector_triangles_small"] = double(last_.small_triangles);
+    s["reflector_triangles_degenerate"] = double(last_.degenerate_triangles);
+    s["cull_nodes_tested"] = double(last_.cull.nodes_tested);
+    s["cull_hull_rejects"] = double(last_.cull.hull_rejects);
+    s["cull_exact_rejects"] = double(last_.cull.exact_rejects);
+    s["cull_leaves_kept"] = double(last_.cull.leaves_kept);
+    s["splat_items"] = double(last_.items.size());
+    s["points_projected"] = double(counters_[0]);
+    s["projections"] = double(counters_[1]);
+    s["splats_written"] = double(counters_[2]);
+    s["points_with_projection"] = double(counters_[3]);
+    s["valid_projection_fraction"] =
+        counters_[0] ? double(counters_[3]) / double(counters_[0]) : 0.0;
+    s["projections_per_point"] =
+        store_.pointCount() ? double(counters_[1]) / double(store_.pointCount()) : 0.0;
+    s["visibility_ms"] = visibility_ms_;
+    s["cull_ms"] = last_.ms;
+    s["splat_ms"] = splat_ms_;
+    return s;
+  }
+
+ private:
+  bool isPointSampled(int instance) const {
+    for (const PointCloud& c : store_.clouds())
+      if (c.points.instance == instance) return true;
+    return false;
+  }
+
+  // The largest reflector-to-point distance: the diagonal of the reflectors' and the point
+  // clouds' bounds together (not the scene's: a wide floor would stretch the root search and
+  // the splat key's depth range for nothing).
+  float reach(const FrameContext& frame) const {
+    Bounds3 b;
+    for (int r : reflectors_) b.extend(frame.gpu.instanceBounds(r));
+    for (const PointCloud& c : store_.clouds())
+      b.extend(frame.gpu.instanceBounds(c.points.instance));
+    return std::max(2.0f * b.radius(), 1e-3f);
+  }
+
+  // The background every reflector shows where no point lands: a cube map at its centre of
+  // everything but the point-sampled objects and itself, other reflectors in base colour.
+  void captureBackground(FrameContext& frame) {
+    const int levels = frame.settings.mip ? gpu::Texture::fullMipLevels(probe_size_) : 1;
+    if (probes_.layers() != 6 * int(reflectors_.size()) || probes_.levels() != levels)
+      probes_ = gpu::Texture::createCubeArray(GL_RGBA16F, probe_size_,
+                                              std::max<int>(1, int(reflectors_.size())), levels);
+    if (!cube_) cube_ = std::make_unique<CubeCapture>(probe_size_);
+    const float radius = std::max(frame.gpu.scene().bounds(frame.gpu.time()).radius(), 1e-3f);
+    for (size_t r = 0; r < reflectors_.size(); ++r) {
+      const int instance = reflectors_[r];
+      const vec3 centre = frame.gpu.instanceBounds(instance).center();
+      cube_->capture(probes_, int(r), centre, 1e-3f * radius, 100.0f * radius, [&](const View& v) {
+        frame.passes.begin(v, frame.settings);
+        frame.passes.drawBackground();
+        frame.passes.drawDiffuseInstances(background_);
+        frame.passes.drawReflectors(base_program_, instance);
+      });
+      ++captures_;
+    }
+    if (frame.settings.mip) probes_.generateMipmaps();
+  }
+
+  // Draws the reflectors into the frame's depth and a triangle-ID image, reads the IDs back and
+  // counts the visible pixels of every reflector triangle.
+  std::vector<std::vector<uint32_t>> visiblePixels(FrameContext& frame) {
+    const ivec2 size = frame.target.size();
+    if (!ids_fbo_ || ids_size_ != size) {
+      ids_ = gpu::Texture::create2D(GL_RG32UI, size.x, size.y);
+      ids_fbo_ = std::make_unique<gpu::Framebuffer>();
+      ids_fbo_->attachColor(0, ids_);
+      ids_fbo_->attachDepth(frame.target.depth());
+      ids_fbo_->setDrawBuffers(1);
+      ids_fbo_->checkComplete("hybrid triangle IDs");
+      ids_size_ = size;
+    }
+    ids_fbo_->bind();
+    const GLuint zero[4] = {0, 0, 0, 0};
+    glClearNamedFramebufferuiv(ids_fbo_->id(), GL_COLOR, 0, zero);
+    frame.passes.drawReflectors(id_program_);
+    std::vector<uvec2> ids(size_t(size.x) * size_t(size.y));
+    ids_.downloadLayer(0, 0, GL_RG_INTEGER, GL_UNSIGNED_INT, ids.data(),
+                       ids.size() * sizeof(uvec2));
+    frame.target.bind();
+
+    const Scene& scene = frame.gpu.scene();
+    std::vector<int> slot(scene.instances.size(), -1);
+    std::vector<std::vector<uint32_t>> pixels(reflectors_.size());
+    for (size_t r = 0; r < reflectors_.size(); ++r) {
+      slot[size_t(reflectors_[r])] = int(r);
+      const Mesh& mesh = scene.meshes[size_t(scene.instances[size_t(reflectors_[r])].mesh)];
+      pixels[r].assign(mesh.triangleCount(), 0);
+    }
+    for (const uvec2& id : ids) {
+      if (id.x == 0) continue;
+      const int r = slot[id.x - 1];
+      if (r >= 0 && id.y < pixels[size_t(r)].size()) ++pixels[size_t(r)][id.y];
+    }
+    return pixels;
+  }
+
+  void splat(FrameContext& frame, float reach) {
+    const ivec2 size = frame.target.size();
+    const size_t pixels = size_t(size.x) * size_t(size.y);
+    if (splats_.size() != pixels * sizeof(uint32_t))
+      splats_ = gpu::Buffer(pixels * sizeof(uint32_t));
+    const uint32_t empty = MIRAGE_HYBRID_EMPTY, zero = 0;
+    glClearNamedBufferData(splats_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty);
+    if (counter_buffer_.size() == 0) counter_buffer_ = gpu::Buffer(sizeof(counters_));
+    glClearNamedBufferData(counter_buffer_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    splats_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_SPLATS);
+    store_.bind(MIRAGE_BIND_HYBRID_POINTS);
+    splat_ms_ = 0.0;
+    std::fill(std::begin(counters_), std::end(counters_), 0u);
+    if (last_.items.empty()) return;
+
+    c3rc_buffer_.upload(std::span<const C3rcData>(last_.c3rcs));
+    item_buffer_.upload(std::span<const ivec4>(last_.items));
+    c3rc_buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_C3RCS);
+    item_buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_ITEMS);
+    counter_buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_COUNTERS);
+    frame.target.depth().bind(MIRAGE_UNIT_HYBRID_DEPTH);
+    const mat4& proj = frame.view.projectionMatrix();
+    const int depth_bits = 32 - index_bits_;
+    splat_program_.set("u_item_count", int(last_.items.size()));
+    splat_program_.set("u_first_only", first_only_ ? 1 : 0);
+    splat_program_.set("u_splat_size", splat_size_);
+    splat_program_.set("u_index_bits", index_bits_);
+    splat_program_.set("u_depth_scale", float(double((1ull << depth_bits) - 1) / double(reach)));
+    splat_program_.set("u_proj", vec2(proj[2][2], proj[3][2]));
+    splat_program_.set("u_occlusion", 0.01f);
+    const bool timing = frame.timer != nullptr;
+    if (timing) glFinish();
+    Stopwatch watch;
+    splat_program_.use();
+    glDispatchCompute(GLuint(std::min<size_t>(last_.items.size(), 65535)), 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    if (timing) {
+      glFinish();
+      splat_ms_ = watch.ms();
+    }
+    counter_buffer_.download(counters_, sizeof(counters_));
+  }
+
+  const MethodInfo& info_;
+  PointStore store_;
+  Culling culling_;
+  bool first_only_, eye_scaled_;
+  int splat_size_, min_pixels_, probe_size_, index_bits_;
+  gpu::Program splat_program_, resolve_program_, id_program_, base_program_;
+  std::vector<int> reflectors_, background_;
+  gpu::Texture probes_, ids_;
+  std::unique_ptr<CubeCapture> cube_;
+  std::unique_ptr<gpu::Framebuffer> ids_fbo_;
+  ivec2 ids_size_{0, 0};
+  gpu::Buffer splats_, c3rc_buffer_, item_buffer_, counter_buffer_;
+  uint32_t counters_[4] = {0, 0, 0, 0};
+  C3rcFrame last_;
+  bool captured_ = false, captured_mip_ = false;
+  uint64_t captured_version_ = 0;
+  long captures_ = 0;
+  double visibility_ms_ = 0.0, splat_ms_ = 0.0;
+};
+
+}  // namespace
+
+MethodEntry hybridMethodEntry() {
+  MethodEntry entry;
+  entry.info.name = "hybrid";
+  entry.info.description =
+      "point samples in kd-trees projected through a continuous 3-ray camera per reflector "
+      "triangle and splatted, over a cube map of the rest (hybrid backward-forward paper)";
+  entry.info.max_order = 1;
+  entry.info.params = {
+      ParamSpec::integer("points", 0, 4000000, 0,
+                         "point samples over all reflected objects (0: their mesh vertices)"),
+      ParamSpec::integer("kd-leaf-points", 8, 65536, 256,
+                         "kd-tree: a node with at most this many points is a leaf"),
+      ParamSpec::real("kd-min-size", 0.0, 1.0, 0.0,
+                      "kd-tree: a node smaller than this fraction of its object's diagonal is a "
+                      "leaf"),
+      ParamSpec::choice("hybrid-culling", {"exact", "hull", "none"}, "exact",
+                        "view-volume culling of kd-tree boxes: hull planes then the exact test, "
+                        "the hull planes only, or none (every point through every C3RC)"),
+      ParamSpec::choice("hybrid-projections", {"all", "first"}, "all",
+                        "splat every projection of a point within a C3RC, or the first only "
+                        "(the paper's one fragment per point)"),
+      ParamSpec::choice("c3rc-rays", {"eye", "unit"}, "eye",
+                        "construction rays' lengths: the vertex's distance to the eye (exact on "
+                        "planar mirrors) or unit (the paper's)"),
+      ParamSpec::integer("splat-size", 0, MIRAGE_HYBRID_MAX_SPLAT, 0,
+                         "side of the square splat in pixels (0: from the point spacing and the "
+                         "local magnification, at most 8)"),
+      ParamSpec::integer("hybrid-min-pixels", 0, 1000000, 1,
+                         "reflector triangles with fewer visible pixels show the environment"),
+      ParamSpec::integer("envmap-size", 8, 2048, 256,
+                         "face size of each reflector's background cube map, in texels")};
+  entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
+    return std::make_unique<HybridMethod>(setup);
+  };
+  return entry;
+}
+
+}  // namespace mirage

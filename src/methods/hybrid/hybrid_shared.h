@@ -1,0 +1,55 @@
+// The hybrid method's data as the shaders and the C++ code see it: the point samples, the work
+// items of the splatting pass, and the per-pixel splat key — a 32-bit word ordered by the
+// push-back distance (the distance from the reflector to the point, the paper's visibility
+// rule: the point nearest the reflector wins) with the point's index in its low bits, written
+// with one atomicMin (GL 4.5 has no 64-bit atomics, and llvmpipe none either).
+#ifndef MIRAGE_METHODS_HYBRID_HYBRID_SHARED_H
+#define MIRAGE_METHODS_HYBRID_HYBRID_SHARED_H
+
+#include "shading/glsl_compat.h"
+
+// Storage bindings (the method's SSBO slot and after) and texture units.
+#define MIRAGE_BIND_HYBRID_C3RCS 4   // C3rcData[]
+#define MIRAGE_BIND_HYBRID_ITEMS 5   // ivec4 work items: C3RC, first point, count, unused
+#define MIRAGE_BIND_HYBRID_POINTS 6  // PointData[] (every set, leaf order)
+#define MIRAGE_BIND_HYBRID_SPLATS 7  // uint per pixel: the splat key
+#define MIRAGE_BIND_HYBRID_COUNTERS \
+  8  // uint[4]: points projected, projections, splats, points projecting
+#define MIRAGE_UNIT_HYBRID_DEPTH 4   // the frame's depth with the reflectors drawn
+#define MIRAGE_UNIT_HYBRID_PROBES 5  // samplerCubeArray: the background per reflector
+
+#define MIRAGE_HYBRID_GROUP 64           // invocations per work item (one kd-tree leaf)
+#define MIRAGE_HYBRID_MAX_SPLAT 8        // the largest automatic splat side, in pixels
+#define MIRAGE_HYBRID_EMPTY 0xFFFFFFFFu  // a pixel no splat reached
+
+SHARED_BEGIN
+
+// One point sample, in its object's space.
+struct PointData {
+  vec4 position;  // xyz: object space; w: the instance (exact as a float below 2^24)
+  vec4 normal;    // xyz: object-space unit normal; w: the point spacing (object space)
+  vec4 albedo;    // rgb: linear albedo
+};
+
+// The splat key of a point: its push-back quantised to the bits the index leaves free.
+// `depth_scale` = (2^(32 - index_bits) - 1) / the largest push-back of the frame.
+SHARED_FN uint hybrid_splat_key(float push_back, float depth_scale, int index_bits, uint index) {
+  float levels = float((1u << uint(32 - index_bits)) - 1u);
+  float q = clamp(floor(push_back * depth_scale), 0.0f, levels);
+  return (uint(q) << uint(index_bits)) | index;
+}
+
+SHARED_FN uint hybrid_splat_index(uint key, int index_bits) {
+  return key & ((1u << uint(index_bits)) - 1u);
+}
+
+// The bits the point indices need (at least 1, at most 22: ten bits of depth at worst).
+SHARED_FN int hybrid_index_bits(uint point_count) {
+  int bits = 1;
+  while (bits < 22 && (1u << uint(bits)) < point_count) ++bits;
+  return bits;
+}
+
+SHARED_END
+
+#endif  // MIRAGE_METHODS_HYBRID_HYBRID_SHARED_H

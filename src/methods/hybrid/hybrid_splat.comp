@@ -1,0 +1,97 @@
+// The forward phase of the hybrid method (the hybrid paper, §6): every point of every kd-tree
+// leaf that survived a C3RC's culling is projected with that C3RC — all of its projections, or
+// the first only (--hybrid-projections first, the paper's one fragment per point) — and splatted
+// as an s×s square at the reflector point that sees it. Visibility: a splat behind the visible
+// reflector surface at its pixel is dropped (another part of the reflector hides it), and among
+// the rest the point nearest the reflector wins through one atomicMin on the packed key.
+#include "render/shaders/common.glsl"
+#include "methods/hybrid/c3rc_shared.h"
+#include "methods/hybrid/hybrid_shared.h"
+
+layout(local_size_x = MIRAGE_HYBRID_GROUP) in;
+
+layout(std430, binding = MIRAGE_BIND_HYBRID_C3RCS) readonly buffer C3rcBlock { C3rcData c3rcs[]; };
+layout(std430, binding = MIRAGE_BIND_HYBRID_ITEMS) readonly buffer ItemBlock { ivec4 items[]; };
+layout(std430, binding = MIRAGE_BIND_HYBRID_POINTS) readonly buffer PointBlock {
+  PointData points[];
+};
+layout(std430, binding = MIRAGE_BIND_HYBRID_SPLATS) coherent buffer SplatBlock { uint splats[]; };
+layout(std430, binding = MIRAGE_BIND_HYBRID_COUNTERS) buffer CounterBlock { uint counters[]; };
+layout(binding = MIRAGE_UNIT_HYBRID_DEPTH) uniform sampler2D u_depth;
+
+uniform int u_item_count;
+uniform int u_first_only;    // 1: the first projection only
+uniform int u_splat_size;    // s: an s×s square; 0: from the magnification
+uniform int u_index_bits;
+uniform float u_depth_scale;
+uniform vec2 u_proj;         // the projection matrix's [2][2] and [3][2]: eye depth from z
+uniform float u_occlusion;   // relative depth tolerance of the occlusion test
+
+// The eye depth the reflector pass left at a pixel.
+float surface_eye_depth(ivec2 pixel) {
+  float z = texelFetch(u_depth, pixel, 0).r * 2.0f - 1.0f;
+  return u_proj.y / (z + u_proj.x);
+}
+
+// The splat's side in pixels: fixed, or (u_splat_size = 0) the point spacing magnified to the
+// screen — by the C3RC (a patch at λ spreads |n(λ)| / |n0| times the base's area) and by the
+// perspective at the reflector point — rounded up, so that neighbouring points close the surface.
+int splat_side(C3rcData c, vec4 proj, float spacing, float eye_depth) {
+  if (u_splat_size > 0) return u_splat_size;
+  float spread = length(c3rc_normal(c, proj.w)) / max(length(vec3(c.n0)), 1.0e-30f);
+  float on_base = spacing / sqrt(max(spread, 1.0e-12f));
+  float pixels = on_base * frame.viewport.y / (2.0f * frame.viewport.z * max(eye_depth, 1.0e-6f));
+  return clamp(int(ceil(pixels)), 1, MIRAGE_HYBRID_MAX_SPLAT);
+}
+
+uint splat(C3rcData c, vec4 proj, vec3 q, float spacing, uint index) {
+  vec3 base = c3rc_base_point(c, proj);
+  vec4 clip = frame.view_proj * vec4(base, 1.0f);
+  if (clip.w <= 0.0f) return 0u;
+  vec2 ndc = clip.xy / clip.w;
+  ivec2 size = ivec2(frame.viewport.xy);
+  int side = splat_side(c, proj, spacing, clip.w);
+  // The side x side block of pixels whose centres are nearest the projected point.
+  vec2 position = (ndc * 0.5f + 0.5f) * vec2(size);
+  ivec2 first = ivec2(floor(position - 0.5f * float(side - 1)));
+  uint key = hybrid_splat_key(length(q - base), u_depth_scale, u_index_bits, index);
+  uint written = 0u;
+  for (int dy = 0; dy < side; ++dy)
+    for (int dx = 0; dx < side; ++dx) {
+      ivec2 pixel = first + ivec2(dx, dy);
+      if (any(lessThan(pixel, ivec2(0))) || any(greaterThanEqual(pixel, size))) continue;
+      // Behind the visible reflector surface here: hidden by another part of the reflector.
+      if (clip.w > surface_eye_depth(pixel) * (1.0f + u_occlusion)) continue;
+      atomicMin(splats[pixel.y * size.x + pixel.x], key);
+      ++written;
+    }
+  return written;
+}
+
+void main() {
+  uint projected = 0u, projections = 0u, written = 0u, seen = 0u;
+  for (uint item = gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x;
+       item < uint(u_item_count); item += gl_NumWorkGroups.x * gl_NumWorkGroups.y) {
+    ivec4 it = items[item];
+    C3rcData c = c3rcs[it.x];
+    for (int i = int(gl_LocalInvocationID.x); i < it.z; i += MIRAGE_HYBRID_GROUP) {
+      uint index = uint(it.y + i);
+      PointData p = points[index];
+      mat4 model = instances[int(p.position.w)].model;
+      vec3 q = (model * vec4(p.position.xyz, 1.0f)).xyz;
+      float spacing = p.normal.w * length(vec3(model[0]));
+      vec4 p0, p1, p2;
+      int n = c3rc_project(c, q, 1.0e-4f, u_first_only != 0, p0, p1, p2);
+      ++projected;
+      for (int k = 0; k < n; ++k) {
+        written += splat(c, k == 0 ? p0 : (k == 1 ? p1 : p2), q, spacing, index);
+      }
+      projections += uint(n);
+      seen += n > 0 ? 1u : 0u;
+    }
+  }
+  atomicAdd(counters[0], projected);
+  atomicAdd(counters[1], projections);
+  atomicAdd(counters[2], written);
+  atomicAdd(counters[3], seen);
+}

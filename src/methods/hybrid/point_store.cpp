@@ -1,0 +1,77 @@
+#include "methods/hybrid/point_store.h"
+
+#include "core/error.h"
+#include "core/timer.h"
+#include "methods/hybrid/hybrid_shared.h"
+
+namespace mirage {
+
+PointStore::PointStore(const Scene& scene, const PointSetOptions& options,
+                       const KdTreeOptions& tree_options) {
+  Stopwatch sample;
+  std::vector<PointSet> sets = samplePoints(scene, pointSampledInstances(scene), options);
+  sample_ms_ = sample.ms();
+  for (const PointSet& s : sets) count_ += s.size();
+  if (count_ >= (size_t(1) << 22))
+    throwInput(
+        "hybrid: {} points, more than the 4,194,304 the splat key can index (lower "
+        "--points)",
+        count_);
+  Stopwatch build;
+  for (PointSet& set : sets) {
+    PointCloud cloud;
+    // A leaf-size floor relative to the object, so that a dense cluster stops splitting.
+    Bounds3 b;
+    for (const vec3& p : set.positions) b.extend(p);
+    KdTreeOptions o = tree_options;
+    o.min_size = tree_options.min_size * glm::length(b.extent());
+    std::vector<uint32_t> order;
+    cloud.tree = KdTree(set.positions, o, order);
+    set.permute(order);
+    cloud.points = std::move(set);
+    clouds_.push_back(std::move(cloud));
+  }
+  build_ms_ = build.ms();
+  uint32_t offset = 0;
+  for (PointCloud& c : clouds_) {
+    c.offset = offset;
+    offset += uint32_t(c.points.size());
+  }
+}
+
+void PointStore::bind(GLuint binding) {
+  if (!uploaded_) {
+    std::vector<shading::PointData> data;
+    data.reserve(count_);
+    for (const PointCloud& c : clouds_)
+      for (size_t i = 0; i < c.points.size(); ++i)
+        data.push_back({vec4(c.points.positions[i], float(c.points.instance)),
+                        vec4(c.points.normals[i], c.points.spacing),
+                        vec4(c.points.albedo[i], 1.0f)});
+    if (data.empty()) data.push_back(shading::PointData{});
+    buffer_.upload(std::span<const shading::PointData>(data));
+    uploaded_ = true;
+  }
+  buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, binding);
+}
+
+size_t PointStore::leafCount() const {
+  size_t n = 0;
+  for (const PointCloud& c : clouds_) n += c.tree.stats().leaves;
+  return n;
+}
+
+double PointStore::averageLeafDepth() const {
+  double sum = 0.0;
+  size_t leaves = leafCount();
+  for (const PointCloud& c : clouds_)
+    sum += c.tree.stats().average_leaf_depth * double(c.tree.stats().leaves);
+  return leaves ? sum / double(leaves) : 0.0;
+}
+
+double PointStore::pointsPerLeaf() const {
+  size_t leaves = leafCount();
+  return leaves ? double(count_) / double(leaves) : 0.0;
+}
+
+}  // namespace mirage
