@@ -31,6 +31,7 @@ class GpuScene {
   // methods re-capture only when something did.
   uint64_t version() const { return version_; }
   const mat4& instanceMatrix(int instance) const { return matrices_[size_t(instance)]; }
+  const std::vector<mat4>& instanceMatrices() const { return matrices_; }
   Bounds3 instanceBounds(int instance) const;
 
   // Binds the instance/material buffers and the environment for any scene program.

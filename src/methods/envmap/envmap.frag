@@ -46,16 +46,14 @@ vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflecto
     dy *= scale;
   }
 #endif
-  vec4 coords = vec4(lookup, layer);
-  vec4 level0 = textureLod(u_probes, coords, 0.0f);
-  vec3 color = frame.options.y != 0 ? textureGrad(u_probes, coords, dx, dy).rgb : level0.rgb;
+  vec4 probe = probe_radiance(u_probes, lookup, layer, dx, dy);
 #ifdef ENVMAP_BOX
   // The distance from the shaded point to what the probe saw along `lookup`.
-  if (level0.a < 0.5f * MISS_DISTANCE) {
-    vec3 seen = centre + level0.a * normalize(lookup);
-    return vec4(color, length(seen - position));
+  if (probe.a < 0.5f * MISS_DISTANCE) {
+    vec3 seen = centre + probe.a * normalize(lookup);
+    return vec4(probe.rgb, length(seen - position));
   }
 #endif
-  return vec4(color, level0.a);
+  return probe;
 #endif
 }

@@ -10,10 +10,6 @@ namespace mirage {
 
 namespace {
 
-vec3 xyz(const vec4& v) {
-  return vec3(v);
-}
-
 // Fills info.xy and the MIRAGE_C3RC_MULTIPLE flag: the hull of the λ ranges in which the three
 // construction rays are not all on one side of the swept triangle.
 void findSidednessInterval(C3rcData& c) {
@@ -22,7 +18,7 @@ void findSidednessInterval(C3rcData& c) {
   breaks[size_t(n++)] = 0.0f;
   for (const vec4& d : {c.d0, c.d1, c.d2}) {
     float r0 = 0.0f, r1 = 0.0f;
-    int k = shading::c3rc_side_crossings(c, xyz(d), r0, r1);
+    int k = shading::c3rc_side_crossings(c, vec3(d), r0, r1);
     if (k >= 1 && r0 < c.info.w) breaks[size_t(n++)] = r0;
     if (k >= 2 && r1 < c.info.w) breaks[size_t(n++)] = r1;
   }
@@ -46,8 +42,8 @@ void findSidednessInterval(C3rcData& c) {
 // along two rays — each valid when no ray leads out of it (a·d_k ≤ 0, exactly), so that the base
 // swept along the cone of the rays, which holds the view volume, lies behind it.
 void findHull(C3rcData& c) {
-  const vec3 v[3] = {xyz(c.v0), xyz(c.v1), xyz(c.v2)};
-  const vec3 d[3] = {xyz(c.d0), xyz(c.d1), xyz(c.d2)};
+  const vec3 v[3] = {vec3(c.v0), vec3(c.v1), vec3(c.v2)};
+  const vec3 d[3] = {vec3(c.d0), vec3(c.d1), vec3(c.d2)};
   std::array<vec3, 13> candidates{};
   size_t n = 0;
   for (int e = 0; e < 3; ++e)
@@ -112,8 +108,8 @@ C3rcData reflectorC3rc(const vec3& eye, const vec3 v[3], const vec3 n[3], float 
 C3rcData transformC3rc(const C3rcData& c, const mat4& m) {
   mat3 l(m);
   auto point = [&](const vec4& p) { return vec3(m * vec4(vec3(p), 1.0f)); };
-  C3rcData out = makeC3rc(point(c.v0), point(c.v1), point(c.v2), l * xyz(c.d0), l * xyz(c.d1),
-                          l * xyz(c.d2), c.info.w);
+  C3rcData out = makeC3rc(point(c.v0), point(c.v1), point(c.v2), l * vec3(c.d0), l * vec3(c.d1),
+                          l * vec3(c.d2), c.info.w);
   return out;
 }
 

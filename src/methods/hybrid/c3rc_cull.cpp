@@ -7,14 +7,14 @@ namespace mirage {
 
 namespace {
 
-vec3 xyz(const vec4& v) {
-  return vec3(v);
+// The slack both culling stages give a box, so that rounding never culls a box that touches the
+// view volume (the tests then only err on the side of keeping).
+float boxMargin(const Bounds3& box) {
+  return 1e-4f * glm::length(box.extent()) + 1e-6f;
 }
 
-// The box grown by a small margin, so that rounding never culls a box that touches the view
-// volume (the tests below then only err on the side of keeping).
 Bounds3 grown(const Bounds3& box) {
-  const float margin = 1e-4f * glm::length(box.extent()) + 1e-6f;
+  const float margin = boxMargin(box);
   return {box.lo - vec3(margin), box.hi + vec3(margin)};
 }
 
@@ -22,10 +22,10 @@ Bounds3 grown(const Bounds3& box) {
 
 bool hullRejects(const C3rcData& c, const Bounds3& box) {
   const vec3 centre = box.center(), half = 0.5f * box.extent();
-  const float margin = 1e-4f * glm::length(box.extent()) + 1e-6f;
+  const float margin = boxMargin(box);
   for (int i = 0; i < c.counts.x; ++i) {
     const vec4& p = c.hull[i];
-    const vec3 a = xyz(p);
+    const vec3 a = vec3(p);
     const float lowest = glm::dot(a, centre) - glm::dot(glm::abs(a), half);
     if (lowest > p.w + margin) return true;
   }
@@ -130,8 +130,8 @@ bool segmentCrossesWall(const vec3& p, const vec3& q, const vec3& vi, const vec3
 
 bool boxMeetsViewVolume(const C3rcData& c, const Bounds3& original) {
   const Bounds3 box = grown(original);
-  const vec3 v[3] = {xyz(c.v0), xyz(c.v1), xyz(c.v2)};
-  const vec3 d[3] = {xyz(c.d0), xyz(c.d1), xyz(c.d2)};
+  const vec3 v[3] = {vec3(c.v0), vec3(c.v1), vec3(c.v2)};
+  const vec3 d[3] = {vec3(c.d0), vec3(c.d1), vec3(c.d2)};
   // Inside: one corner projects (every corner does when the box is inside).
   vec4 p0, p1, p2;
   if (shading::c3rc_project(c, box.lo, 1e-4f, true, p0, p1, p2) > 0) return true;

@@ -29,7 +29,7 @@ struct Local {
   std::vector<ivec4> items;
   std::vector<uint32_t> leaves;
   CullCounters cull;
-  long long degenerate = 0, multiple = 0, points = 0;
+  long long degenerate = 0, multiple = 0;
 };
 
 }  // namespace
@@ -97,7 +97,6 @@ C3rcFrame buildC3rcFrame(const Scene& scene, const std::vector<int>& reflectors,
         if (run_end == run_begin) return;
         local.items.push_back(
             ivec4(int(i), int(cloud.offset + run_begin), int(run_end - run_begin), 0));
-        local.points += run_end - run_begin;
       };
       for (uint32_t leaf : local.leaves) {
         const KdNode& node = cloud.tree.nodes()[leaf];
@@ -115,7 +114,6 @@ C3rcFrame buildC3rcFrame(const Scene& scene, const std::vector<int>& reflectors,
     frame.cull += local.cull;
     frame.degenerate_triangles += local.degenerate;
     frame.multiple_c3rcs += local.multiple;
-    frame.points_to_project += local.points;
   }
   frame.ms = watch.ms();
   return frame;

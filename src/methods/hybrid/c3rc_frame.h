@@ -27,7 +27,6 @@ struct C3rcFrame {
   long long small_triangles = 0;       // visible, but below min_pixels: environment instead
   long long degenerate_triangles = 0;  // zero area or non-finite: skipped
   long long multiple_c3rcs = 0;        // C3RCs whose sidedness allows a second projection
-  long long points_to_project = 0;     // Σ over items of their point counts
   CullCounters cull;
   double ms = 0.0;  // wall time of the whole phase
 };

@@ -25,8 +25,5 @@ vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflecto
                                frame.ambient.rgb);
     return vec4(color, length(q - position));
   }
-  vec4 coords = vec4(direction, float(reflector - 1));
-  vec4 level0 = textureLod(u_probes, coords, 0.0f);
-  vec3 color = frame.options.y != 0 ? textureGrad(u_probes, coords, g_dRdx, g_dRdy).rgb : level0.rgb;
-  return vec4(color, level0.a);
+  return probe_radiance(u_probes, direction, float(reflector - 1), g_dRdx, g_dRdy);
 }

@@ -80,16 +80,13 @@ class HybridMethod final : public Method {
     std::vector<std::vector<uint32_t>> pixels = visiblePixels(frame);
     visibility_ms_ = visibility.ms();
 
-    std::vector<mat4> matrices;
-    for (int i = 0; i < int(frame.gpu.scene().instances.size()); ++i)
-      matrices.push_back(frame.gpu.instanceMatrix(i));
     C3rcFrameOptions options;
     options.min_pixels = min_pixels_;
     options.culling = culling_;
     options.eye_scaled = eye_scaled_;
     options.reach = reach(frame);
-    last_ = buildC3rcFrame(frame.gpu.scene(), reflectors_, pixels, matrices, frame.view.eye(),
-                           store_, options);
+    last_ = buildC3rcFrame(frame.gpu.scene(), reflectors_, pixels, frame.gpu.instanceMatrices(),
+                           frame.view.eye(), store_, options);
     splat(frame, options.reach);
 
     probes_.bind(MIRAGE_UNIT_HYBRID_PROBES);
