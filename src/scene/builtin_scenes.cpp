@@ -170,6 +170,71 @@ Scene twoMirrors() {
   return s;
 }
 
+// The goblet's profile (radius, y): foot and stem, the bowl's outside up to the rim, over the rim
+// and down the bowl's inside to the axis, so that the inside is a concave mirror. About 1.2 tall.
+std::vector<vec2> gobletProfile() {
+  std::vector<vec2> p = {{0.0f, 0.0f},    {0.34f, 0.0f},  {0.36f, 0.01f},  {0.345f, 0.025f},
+                         {0.22f, 0.045f}, {0.1f, 0.075f}, {0.045f, 0.12f}, {0.032f, 0.22f},
+                         {0.032f, 0.48f}, {0.045f, 0.58f}};
+  // The bowl: an ellipsoidal cap of rim radius `radius` and depth `depth` above y = `bottom`,
+  // its wall `wall` thick.
+  const float radius = 0.48f, depth = 0.5f, bottom = 0.68f, wall = 0.015f;
+  const int outer = 9, inner = 10;
+  const float t0 = std::asin(0.075f / radius);  // where the stem meets the bowl
+  for (int i = 0; i < outer; ++i) {
+    float t = t0 + (0.5f * kPi - t0) * float(i) / float(outer - 1);
+    p.push_back({radius * std::sin(t), bottom + depth * (1.0f - std::cos(t))});
+  }
+  p.push_back({radius - 0.5f * wall, bottom + depth + 0.008f});  // the rounded rim
+  for (int i = inner - 1; i >= 0; --i) {
+    float t = 0.5f * kPi * float(i) / float(inner - 1);
+    p.push_back(
+        {(radius - wall) * std::sin(t), bottom + wall + (depth - wall) * (1.0f - std::cos(t))});
+  }
+  return p;
+}
+
+// A cylinder along +Y turned to point along `direction`.
+quat alongDirection(vec3 direction) {
+  vec3 d = glm::normalize(direction), y(0, 1, 0);
+  vec3 axis = glm::cross(y, d);
+  float len = glm::length(axis);
+  if (len < 1e-6f) return quat(1, 0, 0, 0);
+  return glm::angleAxis(std::acos(glm::clamp(glm::dot(y, d), -1.0f, 1.0f)), axis / len);
+}
+
+// The hybrid paper's glass (its Figure 3): a goblet-shaped mirror whose concave bowl shows the
+// objects around it inverted and doubled, and a straw that intersects the reflector (Figure 2).
+Scene glass() {
+  Scene s;
+  s.description =
+      "a mirror goblet on a checkerboard with coloured objects around it and a straw through its "
+      "rim: the concave bowl shows them inverted and doubled (the hybrid paper's glass)";
+  addCheckerFloor(s, 16.0f);
+  int goblet = addMesh(s, procedural::lathe(gobletProfile(), 80));
+  s.meshes[size_t(goblet)].name = "goblet";
+  int mirror = addMaterial(s, Material::mirror("mirror"));
+  addInstance(s, "goblet", goblet, mirror, {});
+  // The straw: from the bowl's inside through the rim on the far side.
+  vec3 straw_base(-0.1f, 0.72f, 0.06f), rim_point(0.335f, 1.18f, -0.335f);
+  int straw = addMesh(s, procedural::cylinder(0.022f, 1.2f, 24));
+  int red = addMaterial(s, Material::diffuse("straw", {0.9f, 0.15f, 0.2f}));
+  addInstance(s, "straw", straw, red,
+              placeAt(straw_base, vec3(1.0f), alongDirection(rim_point - straw_base)));
+  addBox(s, "orange-box", {0.75f, 0.7f, -0.1f}, {0.16f, 0.7f, 0.16f}, {0.95f, 0.5f, 0.1f}, 25.0f);
+  int column = addMesh(s, procedural::cylinder(0.12f, 1.6f, 48));
+  int purple = addMaterial(s, Material::diffuse("purple", {0.55f, 0.25f, 0.7f}));
+  addInstance(s, "purple-column", column, purple, placeAt({-0.85f, 0.0f, 0.2f}));
+  addBox(s, "blue-box", {0.5f, 0.35f, 0.8f}, {0.13f, 0.35f, 0.13f}, {0.15f, 0.3f, 0.85f}, 10.0f);
+  // A hoop standing in front of the goblet, the camera looking through it: the bowl's inside
+  // shows it upside down.
+  int hoop = addMesh(s, procedural::torus(1.0f, 0.08f, 96, 24));
+  int yellow = addMaterial(s, Material::diffuse("yellow", {0.9f, 0.8f, 0.15f}));
+  addInstance(s, "yellow-hoop", hoop, yellow, placeAt({0.0f, 1.08f, 0.75f}));
+  addMainCamera(s, {0.15f, 2.0f, 1.9f}, {0.0f, 0.85f, 0.0f}, 38.0f);
+  return s;
+}
+
 }  // namespace
 
 int addMesh(Scene& scene, Mesh mesh) {
@@ -222,6 +287,7 @@ constexpr BuiltinMaker kBuiltins[] = {
     {"two-mirrors", [](const SceneOptions&) { return twoMirrors(); }},
     {"teapot-sphere", [](const SceneOptions&) { return teapotSphere(); }},
     {"mirror-torus", [](const SceneOptions&) { return mirrorTorus(); }},
+    {"glass", [](const SceneOptions&) { return glass(); }},
 };
 
 const BuiltinMaker* findBuiltin(const std::string& name) {

@@ -1,5 +1,10 @@
 #include "scene/mesh.h"
 
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <unordered_map>
+
 #include "core/error.h"
 
 namespace mirage {
@@ -82,6 +87,69 @@ void Mesh::transform(const mat4& m) {
   // A mirroring transform flips the winding; keep the front faces front.
   if (glm::determinant(mat3(m)) < 0.0f)
     for (uvec3& t : triangles) std::swap(t.y, t.z);
+}
+
+Mesh subdivideMidpoint(const Mesh& mesh) {
+  const std::string& who = mesh.source.empty() ? mesh.name : mesh.source;
+  const size_t n = mesh.positions.size();
+  for (size_t i = 0; i < mesh.triangles.size(); ++i) {
+    const uvec3& t = mesh.triangles[i];
+    if (t.x >= n || t.y >= n || t.z >= n)
+      throwInput("{}: triangle {} refers to vertex {} but there are only {}", who, i,
+                 std::max({t.x, t.y, t.z}), n);
+  }
+  // At most 3T new vertices; indices are 32 bits.
+  if (uint64_t(n) + 3 * uint64_t(mesh.triangles.size()) > std::numeric_limits<uint32_t>::max())
+    throwInput("{}: {} vertices and {} triangles are too many to subdivide", who, n,
+               mesh.triangles.size());
+  const bool has_normals = mesh.normals.size() == n;
+  const bool has_uvs = mesh.uvs.size() == n;
+  const bool has_tangents = mesh.tangents.size() == n;
+  Mesh out;
+  out.name = mesh.name;
+  out.source = mesh.source;
+  out.positions = mesh.positions;
+  if (has_normals) out.normals = mesh.normals;
+  if (has_uvs) out.uvs = mesh.uvs;
+  if (has_tangents) out.tangents = mesh.tangents;
+  out.triangles.reserve(mesh.triangles.size() * 4);
+
+  // One midpoint per undirected edge, keyed by its sorted vertex pair.
+  std::unordered_map<uint64_t, uint32_t> midpoints;
+  midpoints.reserve(mesh.triangles.size() * 2);
+  auto midpoint = [&](uint32_t a, uint32_t b, const vec3& face_normal) {
+    uint64_t key = (uint64_t(std::min(a, b)) << 32) | uint64_t(std::max(a, b));
+    auto [it, inserted] = midpoints.try_emplace(key, uint32_t(out.positions.size()));
+    if (!inserted) return it->second;
+    out.positions.push_back(0.5f * (mesh.positions[a] + mesh.positions[b]));
+    if (has_normals) {
+      vec3 sum = mesh.normals[a] + mesh.normals[b];
+      float len = glm::length(sum);
+      out.normals.push_back(len > 1e-12f ? sum / len : face_normal);
+    }
+    if (has_uvs) out.uvs.push_back(0.5f * (mesh.uvs[a] + mesh.uvs[b]));
+    if (has_tangents) {
+      const vec4 &ta = mesh.tangents[a], &tb = mesh.tangents[b];
+      vec3 t = vec3(ta) + vec3(tb);
+      float len = glm::length(t);
+      out.tangents.push_back(vec4(len > 1e-12f ? t / len : vec3(ta), ta.w));
+    }
+    return it->second;
+  };
+
+  for (const uvec3& t : mesh.triangles) {
+    vec3 a = mesh.positions[t.x], b = mesh.positions[t.y], c = mesh.positions[t.z];
+    vec3 face = glm::cross(b - a, c - a);
+    float len = glm::length(face);
+    face = len > 0.0f ? face / len : vec3(0.0f, 1.0f, 0.0f);
+    uint32_t ab = midpoint(t.x, t.y, face), bc = midpoint(t.y, t.z, face),
+             ca = midpoint(t.z, t.x, face);
+    out.triangles.push_back({t.x, ab, ca});
+    out.triangles.push_back({ab, t.y, bc});
+    out.triangles.push_back({ca, bc, t.z});
+    out.triangles.push_back({ab, bc, ca});
+  }
+  return out;
 }
 
 }  // namespace mirage

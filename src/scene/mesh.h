@@ -33,4 +33,12 @@ struct Mesh {
   void transform(const mat4& m);
 };
 
+// Midpoint subdivision: every triangle split into four at its edge midpoints, one new vertex per
+// edge (shared by both triangles of a shared edge, so a closed mesh stays closed): V + E vertices,
+// 4T triangles. Positions stay on the original flat triangles; midpoint normals are the
+// normalised sum of the edge's end normals, uvs and tangents are interpolated. The original
+// vertices keep their indices; triangle i becomes triangles 4i..4i+3 (its three corners, then the
+// middle one), wound as it was. Throws InputError for an index out of range.
+Mesh subdivideMidpoint(const Mesh& mesh);
+
 }  // namespace mirage

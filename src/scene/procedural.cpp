@@ -108,11 +108,20 @@ Mesh lathe(const std::vector<vec2>& profile, int segments) {
     return glm::length(glm::cross(b - a, c - a)) < 1e-10f;
   });
   m.computeNormals();
-  // The seam duplicates vertices; average their normals so the surface is smooth.
+  // The seam duplicates vertices; average their normals so the surface is smooth. On the axis
+  // one of the two may be in no triangle (its normal a placeholder): it takes the other's.
+  std::vector<bool> used(m.positions.size(), false);
+  for (const uvec3& t : m.triangles) used[t.x] = used[t.y] = used[t.z] = true;
   for (size_t p = 0; p < profile.size(); ++p) {
     size_t a = p * row, b = a + size_t(segments);
-    vec3 n = glm::normalize(m.normals[a] + m.normals[b]);
-    m.normals[a] = m.normals[b] = n;
+    if (used[a] && used[b]) {
+      vec3 sum = m.normals[a] + m.normals[b];
+      if (glm::length(sum) > 1e-12f) m.normals[a] = m.normals[b] = glm::normalize(sum);
+    } else if (used[a]) {
+      m.normals[b] = m.normals[a];
+    } else if (used[b]) {
+      m.normals[a] = m.normals[b];
+    }
   }
   finish(m, "lathe");
   return m;

