@@ -235,6 +235,29 @@ Scene glass() {
   return s;
 }
 
+// A coarse concave mirror (a spherical cap of radius 1 in ten segments and five rings, smooth
+// normals) with a ball near the eye's caustic: its reflector triangles are large C3RCs that
+// converge and then diverge, where one C3RC projects a point twice (the hybrid paper's Figure 3).
+Scene concaveDish() {
+  Scene s;
+  s.description =
+      "a coarse concave mirror dish with a ball near its focus: large convergent-then-divergent "
+      "C3RCs, the case for a second projection inside one C3RC (hybrid paper, Figure 3)";
+  std::vector<vec2> profile;  // rim to axis, so that the normals face into the dish
+  for (int i = 5; i >= 0; --i) {
+    const float t = glm::radians(40.0f) * float(i) / 5.0f;
+    profile.push_back({std::sin(t), 1.0f - std::cos(t)});
+  }
+  int dish = addMesh(s, procedural::lathe(profile, 10));
+  int mirror = addMaterial(s, Material::mirror("mirror"));
+  addInstance(s, "dish", dish, mirror, {});
+  int ball = addMesh(s, procedural::sphere(0.08f, 64, 32));
+  int red = addMaterial(s, Material::diffuse("red", {0.9f, 0.2f, 0.2f}));
+  addInstance(s, "ball", ball, red, placeAt({0.03f, 0.66f, -0.3f}));
+  addMainCamera(s, {0.0f, 2.2f, 0.9f}, {0.0f, 0.1f, 0.0f}, 35.0f);
+  return s;
+}
+
 }  // namespace
 
 int addMesh(Scene& scene, Mesh mesh) {
@@ -288,6 +311,7 @@ constexpr BuiltinMaker kBuiltins[] = {
     {"teapot-sphere", [](const SceneOptions&) { return teapotSphere(); }},
     {"mirror-torus", [](const SceneOptions&) { return mirrorTorus(); }},
     {"glass", [](const SceneOptions&) { return glass(); }},
+    {"concave-dish", [](const SceneOptions&) { return concaveDish(); }},
 };
 
 const BuiltinMaker* findBuiltin(const std::string& name) {

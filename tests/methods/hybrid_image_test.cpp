@@ -120,6 +120,59 @@ TEST_F(HybridImages, NoPointSampledObjectsShowsTheBackgroundOnly) {
   EXPECT_TRUE(psnrAtLeast(truth.gpu, truth.cpu, 35.0, &truth.cpu_ids, "hybrid-sky-only"));
 }
 
+// The coarse concave dish: its large C3RCs converge and then diverge, so near the eye's caustic
+// one C3RC projects a point twice. Splatting every projection (the default) finds them and comes
+// closer to the ray tracer than the first projection alone (the paper's one fragment per point).
+TEST_F(HybridImages, ConcaveDishSplatsSecondProjectionsInsideOneC3rc) {
+  const Scene scene = makeBuiltinScene("concave-dish");
+  const ivec2 size{360, 256};
+  FrameRenderer renderer(scene, size);
+  std::map<std::string, double> all, first;
+  renderWith(renderer, scene, size, {}, 0.0f, &all);
+  renderWith(renderer, scene, size, {{"hybrid-projections", "first"}}, 0.0f, &first);
+  std::printf("projections: all %.0f for %.0f (point, C3RC) pairs; first %.0f\n",
+              all.at("projections"), all.at("points_with_projection"), first.at("projections"));
+  EXPECT_GT(all.at("c3rcs_multiple"), 0.0);
+  EXPECT_EQ(first.at("projections"), first.at("points_with_projection"));
+  EXPECT_EQ(all.at("points_with_projection"), first.at("points_with_projection"));
+  // Measured: 1.3 % more projections than pairs with one.
+  EXPECT_GT(all.at("projections"), 1.005 * all.at("points_with_projection"));
+
+  FrameSettings settings;
+  settings.order = 1;
+  RenderPair with_all = renderWithTruth(scene, "hybrid", size, settings);
+  RenderPair with_first =
+      renderWithTruth(scene, "hybrid", size, settings, {{"hybrid-projections", "first"}});
+  std::printf("reflector PSNR: all %.3f dB, first %.3f dB\n", reflectorPsnr(with_all),
+              reflectorPsnr(with_first));
+  EXPECT_GT(reflectorPsnr(with_all), reflectorPsnr(with_first) + 0.05);
+}
+
+// The level of detail projects a uniform subsample of a C3RC's kept points (about --hybrid-lod
+// per visible pixel of its triangle) with larger splats: far fewer projections, close to the
+// full image.
+TEST_F(HybridImages, LevelOfDetailProjectsFewerPointsAndStaysClose) {
+  const Scene scene = objectsOnly();
+  const ivec2 size{360, 256};
+  FrameRenderer renderer(scene, size);
+  std::map<std::string, double> full, lod;
+  renderWith(renderer, scene, size, kDense, 0.0f, &full);
+  std::map<std::string, std::string> params = kDense;
+  params["hybrid-lod"] = "16";
+  renderWith(renderer, scene, size, params, 0.0f, &lod);
+  EXPECT_EQ(full.at("lod_points"), full.at("cull_points_kept"));
+  EXPECT_EQ(full.at("points_projected"), full.at("cull_points_kept"));
+  EXPECT_EQ(lod.at("cull_points_kept"), full.at("cull_points_kept"));
+  EXPECT_LT(lod.at("points_projected"), 0.25 * full.at("points_projected"));
+
+  FrameSettings settings;
+  settings.order = 1;
+  RenderPair pair = renderWithTruth(scene, "hybrid", size, settings, params);
+  std::printf("reflector PSNR with --hybrid-lod 16: %.2f dB\n", reflectorPsnr(pair));
+  // Measured at 360x256 with 400,000 points: 27.8 dB (30.5 dB with every point).
+  EXPECT_TRUE(psnrAtLeast(pair.gpu, pair.cpu, 27.0, &pair.cpu_ids, "hybrid-lod"));
+}
+
 TEST(HybridCli, BadParametersExitWithTheAllowedRange) {
   struct Case {
     std::string args, expect;
@@ -132,6 +185,7 @@ TEST(HybridCli, BadParametersExitWithTheAllowedRange) {
       {"--hybrid-projections some", "--hybrid-projections"},
       {"--splat-size 9", "--splat-size"},
       {"--kd-min-size 2", "--kd-min-size"},
+      {"--hybrid-lod -1", "--hybrid-lod"},
   };
   for (const Case& c : cases) {
     const CliResult r = runMirage("render --scene teapot-sphere --method hybrid --size 32x32 -o " +

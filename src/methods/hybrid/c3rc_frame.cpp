@@ -1,6 +1,7 @@
 #include "methods/hybrid/c3rc_frame.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include <tbb/enumerable_thread_specific.h>
@@ -29,8 +30,14 @@ struct Local {
   std::vector<ivec4> items;
   std::vector<uint32_t> leaves;
   CullCounters cull;
-  long long degenerate = 0, multiple = 0;
+  long long degenerate = 0, multiple = 0, kept_points = 0, lod_points = 0;
 };
+
+// The stride through a C3RC's kept points that leaves about `density` per visible pixel.
+float lodStride(float density, uint32_t pixels, long long kept) {
+  if (density <= 0.0f || kept == 0) return 1.0f;
+  return std::max(1.0f, float(double(kept) / (double(density) * double(pixels))));
+}
 
 }  // namespace
 
@@ -82,6 +89,7 @@ C3rcFrame buildC3rcFrame(const Scene& scene, const std::vector<int>& reflectors,
     const C3rcData c = reflectorC3rc(eye, v, n, options.reach, options.eye_scaled);
     frame.c3rcs[i] = c;
     if (int(c.info.z) & MIRAGE_C3RC_MULTIPLE) ++local.multiple;
+    const size_t first_item = local.items.size();
     for (size_t k = 0; k < points.clouds().size(); ++k) {
       const PointCloud& cloud = points.clouds()[k];
       local.leaves.clear();
@@ -108,12 +116,23 @@ C3rcFrame buildC3rcFrame(const Scene& scene, const std::vector<int>& reflectors,
       }
       flush();
     }
+    long long kept = 0;
+    for (size_t k = first_item; k < local.items.size(); ++k) kept += local.items[k].z;
+    const float stride =
+        lodStride(options.lod_density, pixels[size_t(ref.reflector)][ref.triangle], kept);
+    for (size_t k = first_item; k < local.items.size(); ++k) {
+      local.items[k].w = std::bit_cast<int>(stride);
+      local.lod_points += (long long)(std::ceil(float(local.items[k].z) / stride));
+    }
+    local.kept_points += kept;
   });
   for (Local& local : locals) {
     frame.items.insert(frame.items.end(), local.items.begin(), local.items.end());
     frame.cull += local.cull;
     frame.degenerate_triangles += local.degenerate;
     frame.multiple_c3rcs += local.multiple;
+    frame.kept_points += local.kept_points;
+    frame.lod_points += local.lod_points;
   }
   frame.ms = watch.ms();
   return frame;

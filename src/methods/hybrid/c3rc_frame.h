@@ -18,11 +18,17 @@ struct C3rcFrameOptions {
   Culling culling = Culling::kExact;
   float reach = 1.0f;      // the largest reflector-to-point distance worth searching
   bool eye_scaled = true;  // construction rays scaled by the eye distance (else unit: the paper)
+  // Level of detail: at most this many points per visible pixel of a C3RC's triangle are
+  // projected (a uniform stride through its kept leaves, whose splats grow to match); 0: all.
+  float lod_density = 0.0f;
 };
 
 struct C3rcFrame {
-  std::vector<C3rcData> c3rcs;         // world space
-  std::vector<ivec4> items;            // C3RC, first point (shared buffer), point count, 0
+  std::vector<C3rcData> c3rcs;  // world space
+  // C3RC, first point (shared buffer), point count, the stride through them (float bits, ≥ 1)
+  std::vector<ivec4> items;
+  long long lod_points = 0;            // points the items take (the strides applied)
+  long long kept_points = 0;           // points in the kept leaves
   long long visible_triangles = 0;     // triangles with at least one visible pixel
   long long small_triangles = 0;       // visible, but below min_pixels: environment instead
   long long degenerate_triangles = 0;  // zero area or non-finite: skipped

@@ -22,6 +22,7 @@ Culling parseCulling(const std::string& text) {
 PointSetOptions pointOptions(const ParamValues& params) {
   PointSetOptions o;
   o.total = params.integer("points");
+  o.minimum = 200000;  // the default: low-polygon objects are topped up to this many points
   return o;
 }
 
@@ -42,6 +43,7 @@ class HybridMethod final : public Method {
         eye_scaled_(setup.params.text("c3rc-rays") == "eye"),
         splat_size_(setup.params.integer("splat-size")),
         min_pixels_(setup.params.integer("hybrid-min-pixels")),
+        lod_density_(float(setup.params.real("hybrid-lod"))),
         probe_size_(setup.params.integer("envmap-size")),
         index_bits_(shading::hybrid_index_bits(uint32_t(std::max<size_t>(store_.pointCount(), 1)))),
         splat_program_(gpu::Program::compute("methods/hybrid/hybrid_splat.comp")),
@@ -82,6 +84,7 @@ class HybridMethod final : public Method {
 
     C3rcFrameOptions options;
     options.min_pixels = min_pixels_;
+    options.lod_density = lod_density_;
     options.culling = culling_;
     options.eye_scaled = eye_scaled_;
     options.reach = reach(frame);
@@ -117,6 +120,8 @@ class HybridMethod final : public Method {
     s["cull_exact_rejects"] = double(last_.cull.exact_rejects);
     s["cull_leaves_kept"] = double(last_.cull.leaves_kept);
     s["splat_items"] = double(last_.items.size());
+    s["cull_points_kept"] = double(last_.kept_points);
+    s["lod_points"] = double(last_.lod_points);
     s["points_projected"] = double(counters_[0]);
     s["projections"] = double(counters_[1]);
     s["splats_written"] = double(counters_[2]);
@@ -257,7 +262,9 @@ class HybridMethod final : public Method {
   PointStore store_;
   Culling culling_;
   bool first_only_, eye_scaled_;
-  int splat_size_, min_pixels_, probe_size_, index_bits_;
+  int splat_size_, min_pixels_;
+  float lod_density_;
+  int probe_size_, index_bits_;
   gpu::Program splat_program_, resolve_program_, id_program_, base_program_;
   std::vector<int> reflectors_, background_;
   gpu::Texture probes_, ids_;
@@ -283,8 +290,10 @@ MethodEntry hybridMethodEntry() {
       "triangle and splatted, over a cube map of the rest (hybrid backward-forward paper)";
   entry.info.max_order = 1;
   entry.info.params = {
-      ParamSpec::integer("points", 0, 4000000, 0,
-                         "point samples over all reflected objects (0: their mesh vertices)"),
+      ParamSpec::integer(
+          "points", 0, 4000000, 0,
+          "point samples over all reflected objects (0: their mesh vertices, topped up by "
+          "surface samples to 200,000 where they are fewer)"),
       ParamSpec::integer("kd-leaf-points", 8, 65536, 256,
                          "kd-tree: a node with at most this many points is a leaf"),
       ParamSpec::real("kd-min-size", 0.0, 1.0, 0.0,
@@ -304,6 +313,9 @@ MethodEntry hybridMethodEntry() {
                          "local magnification, at most 8)"),
       ParamSpec::integer("hybrid-min-pixels", 0, 1000000, 1,
                          "reflector triangles with fewer visible pixels show the environment"),
+      ParamSpec::real("hybrid-lod", 0.0, 1.0e6, 0.0,
+                      "level of detail: project at most this many points per visible pixel of "
+                      "a reflector triangle (a uniform subsample with larger splats; 0: all)"),
       ParamSpec::integer("envmap-size", 8, 2048, 256,
                          "face size of each reflector's background cube map, in texels")};
   entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {

@@ -18,7 +18,7 @@
 #define MIRAGE_UNIT_HYBRID_DEPTH 4   // the frame's depth with the reflectors drawn
 #define MIRAGE_UNIT_HYBRID_PROBES 5  // samplerCubeArray: the background per reflector
 
-#define MIRAGE_HYBRID_GROUP 64           // invocations per work item (one kd-tree leaf)
+#define MIRAGE_HYBRID_GROUP 8            // invocations per work item (see hybrid_splat.comp)
 #define MIRAGE_HYBRID_MAX_SPLAT 8        // the largest automatic splat side, in pixels
 #define MIRAGE_HYBRID_EMPTY 0xFFFFFFFFu  // a pixel no splat reached
 

@@ -1,7 +1,8 @@
 // The forward phase of the hybrid method (the hybrid paper, §6): every point of every kd-tree
 // leaf that survived a C3RC's culling is projected with that C3RC — all of its projections, or
 // the first only (--hybrid-projections first, the paper's one fragment per point) — and splatted
-// as an s×s square at the reflector point that sees it. Visibility: a splat behind the visible
+// as an s×s square at the reflector point that sees it — or, with a level of detail, a uniform
+// stride through them with proportionally larger splats. Visibility: a splat behind the visible
 // reflector surface at its pixel is dropped (another part of the reflector hides it), and among
 // the rest the point nearest the reflector wins through one atomicMin on the packed key.
 #include "render/shaders/common.glsl"
@@ -74,12 +75,18 @@ void main() {
        item < uint(u_item_count); item += gl_NumWorkGroups.x * gl_NumWorkGroups.y) {
     ivec4 it = items[item];
     C3rcData c = c3rcs[it.x];
-    for (int i = int(gl_LocalInvocationID.x); i < it.z; i += MIRAGE_HYBRID_GROUP) {
-      uint index = uint(it.y + i);
+    // The level of detail: every stride-th point (leaves are shuffled: a uniform random
+    // subsample), each standing for `stride` points, so its spacing grows by sqrt(stride) — and
+    // by sqrt(2) more, as a random subset leaves gaps that a regular one would not.
+    float stride = max(intBitsToFloat(it.w), 1.0f);
+    float grown = stride > 1.0f ? sqrt(2.0f * stride) : 1.0f;
+    int taken = stride > 1.0f ? int(ceil(float(it.z) / stride)) : it.z;
+    for (int i = int(gl_LocalInvocationID.x); i < taken; i += MIRAGE_HYBRID_GROUP) {
+      uint index = uint(it.y + min(int(float(i) * stride), it.z - 1));
       PointData p = points[index];
       mat4 model = instances[int(p.position.w)].model;
       vec3 q = (model * vec4(p.position.xyz, 1.0f)).xyz;
-      float spacing = p.normal.w * length(vec3(model[0]));
+      float spacing = p.normal.w * length(vec3(model[0])) * grown;
       vec4 p0, p1, p2;
       int n = c3rc_project(c, q, 1.0e-4f, u_first_only != 0, p0, p1, p2);
       ++projected;

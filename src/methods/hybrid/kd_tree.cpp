@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <random>
 
 #include <tbb/concurrent_vector.h>
 #include <tbb/parallel_reduce.h>
@@ -55,6 +56,9 @@ struct Builder {
     const float largest = std::max({e.x, e.y, e.z});
     if (end - begin <= uint32_t(options.leaf_points) || largest <= options.min_size ||
         depth >= 60) {
+      // A leaf's points in a random (seeded, repeatable) order: every stride through a run of
+      // leaves is then a uniform subsample, which the splatting's level of detail relies on.
+      std::shuffle(index.begin() + begin, index.begin() + end, std::minstd_rand(begin + 1));
       nodes[node_index] = node;
       return;
     }

@@ -115,6 +115,14 @@ std::vector<PointSet> samplePoints(const Scene& scene, const std::vector<int>& i
     cdfs.push_back(areaCdf(scene.meshes[size_t(inst.mesh)], inst.matrixAt(0.0f)));
     area += cdfs.back().empty() ? 0.0 : cdfs.back().back();
   }
+  long long total = options.total;
+  if (total <= 0 && options.minimum > 0) {
+    // Vertices alone are too sparse on low-polygon objects: top them up by area.
+    long long vertices = 0;
+    for (int i : instances)
+      vertices += (long long)scene.meshes[size_t(scene.instances[size_t(i)].mesh)].vertexCount();
+    if (vertices < options.minimum) total = options.minimum;
+  }
   std::vector<PointSet> sets;
   long long assigned = 0;
   for (size_t k = 0; k < instances.size(); ++k) {
@@ -124,14 +132,14 @@ std::vector<PointSet> samplePoints(const Scene& scene, const std::vector<int>& i
     PointSet set;
     set.instance = instances[k];
     const double own = cdfs[k].empty() ? 0.0 : cdfs[k].back();
-    if (options.total <= 0) {
+    if (total <= 0) {
       addVertices(scene, mesh, material, set);
     } else if (own > 0.0) {
       // The last object takes the remainder, so the total is exact.
       long long share = k + 1 == instances.size()
-                            ? options.total - assigned
-                            : std::llround(double(options.total) * own / std::max(area, 1e-30));
-      share = std::clamp(share, 0LL, options.total - assigned);
+                            ? total - assigned
+                            : std::llround(double(total) * own / std::max(area, 1e-30));
+      share = std::clamp(share, 0LL, total - assigned);
       assigned += share;
       size_t samples = size_t(share);
       if (share >= (long long)mesh.vertexCount()) {

@@ -18,6 +18,9 @@ struct PointSetOptions {
   // area; an object whose share reaches its vertex count keeps its vertices and adds uniform
   // surface samples, a smaller share is all uniform samples.
   long long total = 0;
+  // With total 0: when all the objects' vertices together are fewer than this, `minimum`
+  // points are taken as if it were the total (vertices kept, topped up by surface samples).
+  long long minimum = 0;
   uint32_t seed = 1;
 };
 
