@@ -129,6 +129,7 @@ TEST(HybridCli, BadParametersExitWithTheAllowedRange) {
       {"--points -1", "--points"},
       {"--kd-leaf-points 2", "--kd-leaf-points"},
       {"--hybrid-culling fast", "--hybrid-culling"},
+      {"--hybrid-cull-on fpga", "--hybrid-cull-on"},
       {"--hybrid-projections some", "--hybrid-projections"},
       {"--splat-size 9", "--splat-size"},
       {"--kd-min-size 2", "--kd-min-size"},

@@ -18,6 +18,9 @@ struct C3rcFrameOptions {
   Culling culling = Culling::kExact;
   float reach = 1.0f;      // the largest reflector-to-point distance worth searching
   bool eye_scaled = true;  // construction rays scaled by the eye distance (else unit: the paper)
+
+  // false: the C3RCs only, no items (the GPU culls them: kd_gpu_cull.h).
+  bool cull_on_cpu = true;
 };
 
 struct C3rcFrame {
