@@ -182,6 +182,7 @@ TEST(HybridCli, BadParametersExitWithTheAllowedRange) {
       {"--points -1", "--points"},
       {"--kd-leaf-points 2", "--kd-leaf-points"},
       {"--hybrid-culling fast", "--hybrid-culling"},
+      {"--hybrid-cull-on fpga", "--hybrid-cull-on"},
       {"--hybrid-projections some", "--hybrid-projections"},
       {"--splat-size 9", "--splat-size"},
       {"--kd-min-size 2", "--kd-min-size"},
@@ -194,6 +195,15 @@ TEST(HybridCli, BadParametersExitWithTheAllowedRange) {
     EXPECT_NE(r.output.find(c.expect), std::string::npos) << c.args << "\n" << r.output;
     EXPECT_NE(r.output.find("allowed"), std::string::npos) << c.args << "\n" << r.output;
   }
+}
+
+TEST(HybridCli, LevelOfDetailWithGpuCullingIsAClearError) {
+  const CliResult r = runMirage(
+      "render --scene teapot-sphere --method hybrid --size 32x32 --hybrid-lod 4 "
+      "--hybrid-cull-on gpu -o " +
+      (testTempDir("hybrid-cli") / "lod-gpu.png").string());
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("--hybrid-cull-on cpu"), std::string::npos) << r.output;
 }
 
 }  // namespace

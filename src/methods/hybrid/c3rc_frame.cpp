@@ -84,13 +84,14 @@ C3rcFrame buildC3rcFrame(const Scene& scene, const std::vector<int>& reflectors,
     if (!ok) {
       ++local.degenerate;
       frame.c3rcs[i] = C3rcData{};  // never referenced by an item
+      frame.c3rcs[i].info.z = float(MIRAGE_C3RC_DEGENERATE);
       return;
     }
     const C3rcData c = reflectorC3rc(eye, v, n, options.reach, options.eye_scaled);
     frame.c3rcs[i] = c;
     if (int(c.info.z) & MIRAGE_C3RC_MULTIPLE) ++local.multiple;
     const size_t first_item = local.items.size();
-    for (size_t k = 0; k < points.clouds().size(); ++k) {
+    for (size_t k = 0; options.cull_on_cpu && k < points.clouds().size(); ++k) {
       const PointCloud& cloud = points.clouds()[k];
       local.leaves.clear();
       cullLeaves(cloud.tree, transformC3rc(c, to_object[k]), options.culling, local.leaves,

@@ -21,6 +21,9 @@ struct C3rcFrameOptions {
   // Level of detail: at most this many points per visible pixel of a C3RC's triangle are
   // projected (a uniform stride through its kept leaves, whose splats grow to match); 0: all.
   float lod_density = 0.0f;
+
+  // false: the C3RCs only, no items (the GPU culls them: kd_gpu_cull.h).
+  bool cull_on_cpu = true;
 };
 
 struct C3rcFrame {

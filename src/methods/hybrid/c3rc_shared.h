@@ -23,6 +23,9 @@
 #define MIRAGE_C3RC_MULTIPLE 1  // the sidedness test allows a second projection
 #define MIRAGE_C3RC_HULL 8      // bounding planes kept per C3RC
 
+// A C3rcData.info.z flag: the placeholder of a degenerate triangle (never culled nor splatted).
+#define MIRAGE_C3RC_DEGENERATE 2
+
 SHARED_BEGIN
 
 // One C3RC, in world space (the splatting shader) or in an object's space (the culling).

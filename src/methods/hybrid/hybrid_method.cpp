@@ -1,11 +1,14 @@
 #include "methods/hybrid/hybrid_method.h"
 
 #include <algorithm>
+#include <cstdlib>
 
+#include "core/error.h"
 #include "core/timer.h"
 #include "gpu/buffer.h"
 #include "methods/hybrid/c3rc_frame.h"
 #include "methods/hybrid/hybrid_shared.h"
+#include "methods/hybrid/kd_gpu_cull.h"
 #include "methods/hybrid/point_store.h"
 #include "render/cube_capture.h"
 
@@ -57,6 +60,14 @@ class HybridMethod final : public Method {
     reflectors_ = scene.reflectorInstances();
     for (int i = 0; i < int(scene.instances.size()); ++i)
       if (!scene.isReflector(i) && !isPointSampled(i)) background_.push_back(i);
+    if (setup.params.text("hybrid-cull-on") == "gpu") {
+      if (lod_density_ > 0.0f)
+        throwInput(
+            "hybrid: --hybrid-lod {} needs --hybrid-cull-on cpu (the GPU traversal hands every "
+            "kept point to the splatting)",
+            lod_density_);
+      gpu_cull_ = std::make_unique<KdGpuCull>(store_);
+    }
   }
 
   const MethodInfo& info() const override { return info_; }
@@ -88,8 +99,10 @@ class HybridMethod final : public Method {
     options.culling = culling_;
     options.eye_scaled = eye_scaled_;
     options.reach = reach(frame);
+    options.cull_on_cpu = !gpu_cull_;
     last_ = buildC3rcFrame(frame.gpu.scene(), reflectors_, pixels, frame.gpu.instanceMatrices(),
                            frame.view.eye(), store_, options);
+    if (gpu_cull_) gpu_last_ = gpu_cull_->run(last_.c3rcs, frame.gpu.instanceMatrices(), culling_);
     splat(frame, options.reach);
 
     probes_.bind(MIRAGE_UNIT_HYBRID_PROBES);
@@ -115,11 +128,12 @@ class HybridMethod final : public Method {
     s["reflector_triangles_visible"] = double(last_.visible_triangles);
     s["reflector_triangles_small"] = double(last_.small_triangles);
     s["reflector_triangles_degenerate"] = double(last_.degenerate_triangles);
-    s["cull_nodes_tested"] = double(last_.cull.nodes_tested);
-    s["cull_hull_rejects"] = double(last_.cull.hull_rejects);
-    s["cull_exact_rejects"] = double(last_.cull.exact_rejects);
-    s["cull_leaves_kept"] = double(last_.cull.leaves_kept);
-    s["splat_items"] = double(last_.items.size());
+    const CullCounters& cull = gpu_cull_ ? gpu_last_.cull : last_.cull;
+    s["cull_nodes_tested"] = double(cull.nodes_tested);
+    s["cull_hull_rejects"] = double(cull.hull_rejects);
+    s["cull_exact_rejects"] = double(cull.exact_rejects);
+    s["cull_leaves_kept"] = double(cull.leaves_kept);
+    s["splat_items"] = double(itemCount());
     s["cull_points_kept"] = double(last_.kept_points);
     s["lod_points"] = double(last_.lod_points);
     s["points_projected"] = double(counters_[0]);
@@ -131,12 +145,23 @@ class HybridMethod final : public Method {
     s["projections_per_point"] =
         store_.pointCount() ? double(counters_[1]) / double(store_.pointCount()) : 0.0;
     s["visibility_ms"] = visibility_ms_;
-    s["cull_ms"] = last_.ms;
+    // Both paths: the whole backward phase (C3RCs and culling); on the GPU path with the move
+    // into the clouds' spaces (CPU) and the culling pass up to its glFinish and read-back.
+    s["cull_ms"] = last_.ms + gpu_last_.transform_ms + gpu_last_.gpu_ms;
+    s["cull_on_gpu"] = gpu_cull_ ? 1.0 : 0.0;
+    if (gpu_cull_) {
+      s["cull_gpu_ms"] = gpu_last_.gpu_ms;
+      s["cull_transform_ms"] = gpu_last_.transform_ms;
+      s["cull_gpu_dispatches"] = double(gpu_last_.dispatches);
+    }
     s["splat_ms"] = splat_ms_;
     return s;
   }
 
  private:
+  // The splatting pass's work items: from the CPU culling, or already on the GPU.
+  size_t itemCount() const { return gpu_cull_ ? gpu_last_.items : last_.items.size(); }
+
   bool isPointSampled(int instance) const {
     for (const PointCloud& c : store_.clouds())
       if (c.points.instance == instance) return true;
@@ -228,17 +253,18 @@ class HybridMethod final : public Method {
     store_.bind(MIRAGE_BIND_HYBRID_POINTS);
     splat_ms_ = 0.0;
     std::fill(std::begin(counters_), std::end(counters_), 0u);
-    if (last_.items.empty()) return;
+    if (itemCount() == 0) return;
 
     c3rc_buffer_.upload(std::span<const C3rcData>(last_.c3rcs));
-    item_buffer_.upload(std::span<const ivec4>(last_.items));
+    if (!gpu_cull_) item_buffer_.upload(std::span<const ivec4>(last_.items));
     c3rc_buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_C3RCS);
-    item_buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_ITEMS);
+    (gpu_cull_ ? gpu_cull_->items() : item_buffer_)
+        .bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_ITEMS);
     counter_buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_COUNTERS);
     frame.target.depth().bind(MIRAGE_UNIT_HYBRID_DEPTH);
     const mat4& proj = frame.view.projectionMatrix();
     const int depth_bits = 32 - index_bits_;
-    splat_program_.set("u_item_count", int(last_.items.size()));
+    splat_program_.set("u_item_count", int(itemCount()));
     splat_program_.set("u_first_only", first_only_ ? 1 : 0);
     splat_program_.set("u_splat_size", splat_size_);
     splat_program_.set("u_index_bits", index_bits_);
@@ -249,13 +275,28 @@ class HybridMethod final : public Method {
     if (timing) glFinish();
     Stopwatch watch;
     splat_program_.use();
-    glDispatchCompute(GLuint(std::min<size_t>(last_.items.size(), 65535)), 1, 1);
+    glDispatchCompute(GLuint(std::min<size_t>(itemCount(), 65535)), 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     if (timing) {
       glFinish();
       splat_ms_ = watch.ms();
     }
     counter_buffer_.download(counters_, sizeof(counters_));
+    checkEveryPairProjected();
+  }
+
+  // The splatting shader counts the (point, C3RC) pairs it projected; fewer than the items hold
+  // means the driver cut its loops short (llvmpipe stops a shader loop after 65,535 iterations
+  // without a word): an error, not a frame with reflections silently missing. Each item may
+  // round its strided count differently on the GPU, hence the slack of one per item.
+  void checkEveryPairProjected() const {
+    if (gpu_cull_) return;
+    const long long projected = counters_[0], expected = last_.lod_points;
+    if (std::llabs(projected - expected) > (long long)last_.items.size())
+      throwRuntime(
+          "hybrid: the splatting pass projected {} of the {} (point, C3RC) pairs it was given: "
+          "the GL driver cut its loops short",
+          projected, expected);
   }
 
   const MethodInfo& info_;
@@ -274,6 +315,8 @@ class HybridMethod final : public Method {
   gpu::Buffer splats_, c3rc_buffer_, item_buffer_, counter_buffer_;
   uint32_t counters_[4] = {0, 0, 0, 0};
   C3rcFrame last_;
+  std::unique_ptr<KdGpuCull> gpu_cull_;  // --hybrid-cull-on gpu
+  KdGpuCullResult gpu_last_;
   bool captured_ = false, captured_mip_ = false;
   uint64_t captured_version_ = 0;
   long captures_ = 0;
@@ -302,6 +345,10 @@ MethodEntry hybridMethodEntry() {
       ParamSpec::choice("hybrid-culling", {"exact", "hull", "none"}, "exact",
                         "view-volume culling of kd-tree boxes: hull planes then the exact test, "
                         "the hull planes only, or none (every point through every C3RC)"),
+      ParamSpec::choice("hybrid-cull-on", {"cpu", "gpu"}, "cpu",
+                        "where the kd-trees are culled: on the CPU (TBB, adjacent leaves merged "
+                        "into longer items) or by a compute shader (the same tests; slower on "
+                        "llvmpipe)"),
       ParamSpec::choice("hybrid-projections", {"all", "first"}, "all",
                         "splat every projection of a point within a C3RC, or the first only "
                         "(the paper's one fragment per point)"),
