@@ -41,4 +41,10 @@ struct Mesh {
 // middle one), wound as it was. Throws InputError for an index out of range.
 Mesh subdivideMidpoint(const Mesh& mesh);
 
+// The fraction of the mesh's edges that only one triangle uses, with vertices at the same
+// position (to 1e-5 of the mesh's size) welded first (seams in normals or uvs do not open a
+// surface): 0 for a closed surface, 1 for a soup of separate triangles. An edge used by three or
+// more triangles counts as closed.
+double boundaryEdgeFraction(const Mesh& mesh);
+
 }  // namespace mirage

@@ -103,20 +103,28 @@ SHARED_FN int c3rc_quadratic_roots(float a, float b, float c, SHARED_OUT(float) 
 }
 
 // The root of the monotonic p in [lo, hi] where p(lo), p(hi) differ in sign: Newton's method
-// kept inside the bracket, bisection where Newton would leave it.
+// from lo (its first step is the linear estimate there), kept inside the bracket, bisection
+// where Newton would leave it. It stops once |p(x)| is within float rounding of p's evaluation
+// and the slope makes that a root to 1e-5 (far below a pixel), or the steps are a few ulps.
 SHARED_FN float c3rc_bracketed_root(vec4 p, float lo, float hi) {
   float flo = c3rc_poly(p, lo);
-  float x = 0.5f * (lo + hi);
+  float dlo = c3rc_poly_derivative(p, lo);
+  float x = dlo != 0.0f ? lo - flo / dlo : 0.5f * (lo + hi);
+  if (!(x > lo && x < hi)) x = 0.5f * (lo + hi);
   for (int i = 0; i < 40; ++i) {
     float f = c3rc_poly(p, x);
-    if (f == 0.0f) return x;
+    float ax = abs(x);
+    float rounding = 4.0e-7f * (abs(p.x) + ax * (abs(p.y) + ax * (abs(p.z) + ax * abs(p.w))));
+    float df = c3rc_poly_derivative(p, x);
+    // Within rounding of 0 where the cubic is steep enough that this pins x to 1e-5: done.
+    // Where it is flat (near a double root) rounding says little: go on narrowing the bracket.
+    if (f == 0.0f || (abs(f) <= rounding && abs(f) <= 1.0e-5f * max(1.0f, ax) * abs(df))) return x;
     if ((f < 0.0f) == (flo < 0.0f)) {
       lo = x;
       flo = f;
     } else {
       hi = x;
     }
-    float df = c3rc_poly_derivative(p, x);
     float next = df != 0.0f ? x - f / df : 0.5f * (lo + hi);
     if (!(next > lo && next < hi)) next = 0.5f * (lo + hi);
     // Float carries ~7 digits: stop at a few ulps of movement, or when the bracket is that tight.
@@ -241,6 +249,21 @@ SHARED_FN int c3rc_project(C3rcData c, vec3 q, float eps, bool first_only, SHARE
 // The reflector point that sees a projection (barycentrics carried back to the base).
 SHARED_FN vec3 c3rc_base_point(C3rcData c, vec4 proj) {
   return proj.x * vec3(c.v0) + proj.y * vec3(c.v1) + proj.z * vec3(c.v2);
+}
+
+// The area a small patch facing the rays at a projection keeps on its way to the screen (up to
+// the perspective), relative to its own: T(λ)'s size against the base's, |n(λ)| / |n0| (within
+// T(λ)'s plane the map to the base keeps barycentrics); T(λ)'s tilt against the ray through the
+// point, |n̂(λ)·d̂| (a patch across the ray covers 1 / |n̂(λ)·d̂| of itself on T(λ)); and the
+// base's foreshortening towards the eye, 1 / |n̂0·ê|. On a planar mirror the tilts cancel; near
+// a caustic T(λ) turns along the rays and the patch spreads wide. `to_eye` is a unit vector.
+SHARED_FN float c3rc_spread(C3rcData c, vec4 proj, vec3 to_eye) {
+  vec3 nl = c3rc_normal(c, proj.w), n0 = vec3(c.n0);
+  vec3 d = proj.x * vec3(c.d0) + proj.y * vec3(c.d1) + proj.z * vec3(c.d2);
+  float grow = length(nl) / max(length(n0), 1.0e-30f);
+  float tilt = abs(dot(nl, d)) / max(length(nl) * length(d), 1.0e-30f);
+  float facing = abs(dot(n0, to_eye)) / max(length(n0), 1.0e-30f);
+  return grow * tilt / max(facing, 1.0e-6f);
 }
 
 // The λ ≥ 0 values (up to 2, ascending) where construction ray k lies in T(λ)'s plane.

@@ -43,6 +43,7 @@ class HybridMethod final : public Method {
         store_(setup.gpu.scene(), pointOptions(setup.params), treeOptions(setup.params)),
         culling_(parseCulling(setup.params.text("hybrid-culling"))),
         first_only_(setup.params.text("hybrid-projections") == "first"),
+        keep_backfaces_(setup.params.text("hybrid-backfaces") == "keep"),
         eye_scaled_(setup.params.text("c3rc-rays") == "eye"),
         splat_size_(setup.params.integer("splat-size")),
         min_pixels_(setup.params.integer("hybrid-min-pixels")),
@@ -140,6 +141,7 @@ class HybridMethod final : public Method {
     s["projections"] = double(counters_[1]);
     s["splats_written"] = double(counters_[2]);
     s["points_with_projection"] = double(counters_[3]);
+    s["points_facing_away"] = double(counters_[4]);
     s["valid_projection_fraction"] =
         counters_[0] ? double(counters_[3]) / double(counters_[0]) : 0.0;
     s["projections_per_point"] =
@@ -271,6 +273,7 @@ class HybridMethod final : public Method {
     splat_program_.set("u_depth_scale", float(double((1ull << depth_bits) - 1) / double(reach)));
     splat_program_.set("u_proj", vec2(proj[2][2], proj[3][2]));
     splat_program_.set("u_occlusion", 0.01f);
+    splat_program_.set("u_keep_backfaces", keep_backfaces_ ? 1 : 0);
     const bool timing = frame.timer != nullptr;
     if (timing) glFinish();
     Stopwatch watch;
@@ -302,7 +305,7 @@ class HybridMethod final : public Method {
   const MethodInfo& info_;
   PointStore store_;
   Culling culling_;
-  bool first_only_, eye_scaled_;
+  bool first_only_, keep_backfaces_, eye_scaled_;
   int splat_size_, min_pixels_;
   float lod_density_;
   int probe_size_, index_bits_;
@@ -313,7 +316,7 @@ class HybridMethod final : public Method {
   std::unique_ptr<gpu::Framebuffer> ids_fbo_;
   ivec2 ids_size_{0, 0};
   gpu::Buffer splats_, c3rc_buffer_, item_buffer_, counter_buffer_;
-  uint32_t counters_[4] = {0, 0, 0, 0};
+  uint32_t counters_[5] = {0, 0, 0, 0, 0};
   C3rcFrame last_;
   std::unique_ptr<KdGpuCull> gpu_cull_;  // --hybrid-cull-on gpu
   KdGpuCullResult gpu_last_;
@@ -352,6 +355,10 @@ MethodEntry hybridMethodEntry() {
       ParamSpec::choice("hybrid-projections", {"all", "first"}, "all",
                         "splat every projection of a point within a C3RC, or the first only "
                         "(the paper's one fragment per point)"),
+      ParamSpec::choice("hybrid-backfaces", {"cull", "keep"}, "cull",
+                        "points of a closed object facing away from a reflector triangle: "
+                        "skipped before the projection (hidden; open surfaces keep them), or "
+                        "projected as the paper does"),
       ParamSpec::choice("c3rc-rays", {"eye", "unit"}, "eye",
                         "construction rays' lengths: the vertex's distance to the eye (exact on "
                         "planar mirrors) or unit (the paper's)"),

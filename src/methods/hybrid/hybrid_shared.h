@@ -14,7 +14,7 @@
 #define MIRAGE_BIND_HYBRID_POINTS 6  // PointData[] (every set, leaf order)
 #define MIRAGE_BIND_HYBRID_SPLATS 7  // uint per pixel: the splat key
 #define MIRAGE_BIND_HYBRID_COUNTERS \
-  8  // uint[4]: points projected, projections, splats, points projecting
+  8  // uint[5]: pairs given, projections, splats, pairs projecting, pairs facing away
 #define MIRAGE_UNIT_HYBRID_DEPTH 4   // the frame's depth with the reflectors drawn
 #define MIRAGE_UNIT_HYBRID_PROBES 5  // samplerCubeArray: the background per reflector
 
@@ -28,8 +28,15 @@ SHARED_BEGIN
 struct PointData {
   vec4 position;  // xyz: object space; w: the instance (exact as a float below 2^24)
   vec4 normal;    // xyz: object-space unit normal; w: the point spacing (object space)
-  vec4 albedo;    // rgb: linear albedo
+  vec4 albedo;    // rgb: linear albedo; w: 1 where the object is closed (its back faces hidden)
 };
+
+// A point whose normal faces away from all three corners of a reflector triangle faces away
+// from every point of it (each is a convex combination of the corners): on a closed surface it
+// is hidden from that triangle, and the splatting skips it before the cubic.
+SHARED_FN bool hybrid_faces_away(vec3 normal, vec3 q, vec3 v0, vec3 v1, vec3 v2) {
+  return dot(normal, v0 - q) < 0.0f && dot(normal, v1 - q) < 0.0f && dot(normal, v2 - q) < 0.0f;
+}
 
 // The splat key of a point: its push-back quantised to the bits the index leaves free.
 // `depth_scale` = (2^(32 - index_bits) - 1) / the largest push-back of the frame.

@@ -27,6 +27,7 @@ uniform int u_index_bits;
 uniform float u_depth_scale;
 uniform vec2 u_proj;         // the projection matrix's [2][2] and [3][2]: eye depth from z
 uniform float u_occlusion;   // relative depth tolerance of the occlusion test
+uniform int u_keep_backfaces;  // 1: project the back-facing points of closed objects too
 
 // The eye depth the reflector pass left at a pixel.
 float surface_eye_depth(ivec2 pixel) {
@@ -35,13 +36,13 @@ float surface_eye_depth(ivec2 pixel) {
 }
 
 // The splat's side in pixels: fixed, or (u_splat_size = 0) the point spacing magnified to the
-// screen — by the C3RC (a patch at λ spreads |n(λ)| / |n0| times the base's area) and by the
-// perspective at the reflector point — rounded up, so that neighbouring points close the surface.
-int splat_side(C3rcData c, vec4 proj, float spacing, float eye_depth) {
+// screen — by the C3RC (c3rc_spread: its growth and tilts) and by the perspective at the
+// reflector point — rounded up, so that neighbouring points close the surface.
+int splat_side(C3rcData c, vec4 proj, vec3 base, float spacing, float eye_depth) {
   if (u_splat_size > 0) return u_splat_size;
-  float spread = length(c3rc_normal(c, proj.w)) / max(length(vec3(c.n0)), 1.0e-30f);
-  float on_base = spacing / sqrt(max(spread, 1.0e-12f));
-  float pixels = on_base * frame.viewport.y / (2.0f * frame.viewport.z * max(eye_depth, 1.0e-6f));
+  float spread = c3rc_spread(c, proj, normalize(frame.eye.xyz - base));
+  float on_screen = spacing / sqrt(max(spread, 1.0e-12f));
+  float pixels = on_screen * frame.viewport.y / (2.0f * frame.viewport.z * max(eye_depth, 1.0e-6f));
   return clamp(int(ceil(pixels)), 1, MIRAGE_HYBRID_MAX_SPLAT);
 }
 
@@ -51,7 +52,7 @@ uint splat(C3rcData c, vec4 proj, vec3 q, float spacing, uint index) {
   if (clip.w <= 0.0f) return 0u;
   vec2 ndc = clip.xy / clip.w;
   ivec2 size = ivec2(frame.viewport.xy);
-  int side = splat_side(c, proj, spacing, clip.w);
+  int side = splat_side(c, proj, base, spacing, clip.w);
   // The side x side block of pixels whose centres are nearest the projected point.
   vec2 position = (ndc * 0.5f + 0.5f) * vec2(size);
   ivec2 first = ivec2(floor(position - 0.5f * float(side - 1)));
@@ -70,7 +71,7 @@ uint splat(C3rcData c, vec4 proj, vec3 q, float spacing, uint index) {
 }
 
 void main() {
-  uint projected = 0u, projections = 0u, written = 0u, seen = 0u;
+  uint projected = 0u, projections = 0u, written = 0u, seen = 0u, facing_away = 0u;
   for (uint item = gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x;
        item < uint(u_item_count); item += gl_NumWorkGroups.x * gl_NumWorkGroups.y) {
     ivec4 it = items[item];
@@ -81,14 +82,23 @@ void main() {
     float stride = max(intBitsToFloat(it.w), 1.0f);
     float grown = stride > 1.0f ? sqrt(2.0f * stride) : 1.0f;
     int taken = stride > 1.0f ? int(ceil(float(it.z) / stride)) : it.z;
+    // An item lies in one point cloud: one instance, its matrices and closedness loaded once.
+    int instance = int(points[it.y].position.w);
+    mat4 model = instances[instance].model;
+    mat3 normal_matrix = mat3(instances[instance].normal_matrix);
+    float spacing_scale = length(vec3(model[0])) * grown;
+    bool cull_back = u_keep_backfaces == 0 && points[it.y].albedo.w > 0.5f;
     for (int i = int(gl_LocalInvocationID.x); i < taken; i += MIRAGE_HYBRID_GROUP) {
       uint index = uint(it.y + min(int(float(i) * stride), it.z - 1));
-      PointData p = points[index];
-      mat4 model = instances[int(p.position.w)].model;
-      vec3 q = (model * vec4(p.position.xyz, 1.0f)).xyz;
-      float spacing = p.normal.w * length(vec3(model[0])) * grown;
+      vec4 position = points[index].position, object_normal = points[index].normal;
+      vec3 q = (model * vec4(position.xyz, 1.0f)).xyz;
+      float spacing = object_normal.w * spacing_scale;
       vec4 p0, p1, p2;
-      int n = c3rc_project(c, q, 1.0e-4f, u_first_only != 0, p0, p1, p2);
+      int n = 0;
+      bool hidden = cull_back && hybrid_faces_away(normal_matrix * object_normal.xyz, q,
+                                                   vec3(c.v0), vec3(c.v1), vec3(c.v2));
+      if (!hidden) n = c3rc_project(c, q, 1.0e-4f, u_first_only != 0, p0, p1, p2);
+      facing_away += hidden ? 1u : 0u;
       ++projected;
       for (int k = 0; k < n; ++k) {
         written += splat(c, k == 0 ? p0 : (k == 1 ? p1 : p2), q, spacing, index);
@@ -101,4 +111,5 @@ void main() {
   atomicAdd(counters[1], projections);
   atomicAdd(counters[2], written);
   atomicAdd(counters[3], seen);
+  atomicAdd(counters[4], facing_away);
 }

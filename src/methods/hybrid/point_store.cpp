@@ -47,7 +47,7 @@ void PointStore::bind(GLuint binding) {
       for (size_t i = 0; i < c.points.size(); ++i)
         data.push_back({vec4(c.points.positions[i], float(c.points.instance)),
                         vec4(c.points.normals[i], c.points.spacing),
-                        vec4(c.points.albedo[i], 1.0f)});
+                        vec4(c.points.albedo[i], c.points.closed ? 1.0f : 0.0f)});
     if (data.empty()) data.push_back(shading::PointData{});
     buffer_.upload(std::span<const shading::PointData>(data));
     uploaded_ = true;
