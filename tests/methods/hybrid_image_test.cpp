@@ -36,7 +36,7 @@ TEST_F(HybridImages, ReflectsNearbyObjectsBetterThanEnvironmentMaps) {
   RenderPair envmap = renderWithTruth(scene, "envmap", size, settings);
   std::printf("reflector PSNR: hybrid %.2f dB, envmap %.2f dB\n", reflectorPsnr(hybrid),
               reflectorPsnr(envmap));
-  // Measured at 360x256 with 400,000 points: 30.5 dB (hybrid) vs 21.4 dB (envmap).
+  // Measured at 360x256 with 400,000 points: 30.6 dB (hybrid) vs 21.4 dB (envmap).
   EXPECT_TRUE(psnrAtLeast(hybrid.gpu, hybrid.cpu, 28.5, &hybrid.cpu_ids, "hybrid-objects"));
   EXPECT_GT(reflectorPsnr(hybrid), reflectorPsnr(envmap) + 5.0);
 }
@@ -135,8 +135,8 @@ TEST_F(HybridImages, ConcaveDishSplatsSecondProjectionsInsideOneC3rc) {
   EXPECT_GT(all.at("c3rcs_multiple"), 0.0);
   EXPECT_EQ(first.at("projections"), first.at("points_with_projection"));
   EXPECT_EQ(all.at("points_with_projection"), first.at("points_with_projection"));
-  // Measured: 1.3 % more projections than pairs with one.
-  EXPECT_GT(all.at("projections"), 1.005 * all.at("points_with_projection"));
+  // Measured: 0.64 % more projections than pairs with one (20.5 vs 19.8 dB below).
+  EXPECT_GT(all.at("projections"), 1.003 * all.at("points_with_projection"));
 
   FrameSettings settings;
   settings.order = 1;
@@ -145,7 +145,7 @@ TEST_F(HybridImages, ConcaveDishSplatsSecondProjectionsInsideOneC3rc) {
       renderWithTruth(scene, "hybrid", size, settings, {{"hybrid-projections", "first"}});
   std::printf("reflector PSNR: all %.3f dB, first %.3f dB\n", reflectorPsnr(with_all),
               reflectorPsnr(with_first));
-  EXPECT_GT(reflectorPsnr(with_all), reflectorPsnr(with_first) + 0.05);
+  EXPECT_GT(reflectorPsnr(with_all), reflectorPsnr(with_first) + 0.3);
 }
 
 // The level of detail projects a uniform subsample of a C3RC's kept points (about --hybrid-lod
@@ -169,8 +169,8 @@ TEST_F(HybridImages, LevelOfDetailProjectsFewerPointsAndStaysClose) {
   settings.order = 1;
   RenderPair pair = renderWithTruth(scene, "hybrid", size, settings, params);
   std::printf("reflector PSNR with --hybrid-lod 16: %.2f dB\n", reflectorPsnr(pair));
-  // Measured at 360x256 with 400,000 points: 27.8 dB (30.5 dB with every point).
-  EXPECT_TRUE(psnrAtLeast(pair.gpu, pair.cpu, 27.0, &pair.cpu_ids, "hybrid-lod"));
+  // Measured at 360x256 with 400,000 points: 29.3 dB (30.6 dB with every point).
+  EXPECT_TRUE(psnrAtLeast(pair.gpu, pair.cpu, 28.5, &pair.cpu_ids, "hybrid-lod"));
 }
 
 TEST(HybridCli, BadParametersExitWithTheAllowedRange) {

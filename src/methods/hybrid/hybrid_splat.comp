@@ -76,11 +76,10 @@ void main() {
        item < uint(u_item_count); item += gl_NumWorkGroups.x * gl_NumWorkGroups.y) {
     ivec4 it = items[item];
     C3rcData c = c3rcs[it.x];
-    // The level of detail: every stride-th point (leaves are shuffled: a uniform random
-    // subsample), each standing for `stride` points, so its spacing grows by sqrt(stride) — and
-    // by sqrt(2) more, as a random subset leaves gaps that a regular one would not.
+    // The level of detail: every stride-th point (leaves are in Morton order: a stratified
+    // subsample), each standing for `stride` points, so its spacing grows by sqrt(stride).
     float stride = max(intBitsToFloat(it.w), 1.0f);
-    float grown = stride > 1.0f ? sqrt(2.0f * stride) : 1.0f;
+    float grown = sqrt(stride);
     int taken = stride > 1.0f ? int(ceil(float(it.z) / stride)) : it.z;
     // An item lies in one point cloud: one instance, its matrices and closedness loaded once.
     int instance = int(points[it.y].position.w);

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <random>
 
 #include <tbb/concurrent_vector.h>
 #include <tbb/parallel_reduce.h>
@@ -37,6 +36,27 @@ struct Builder {
                                 });
   }
 
+  static uint32_t spread10(uint32_t v) {  // 10 bits to every third of 30
+    v &= 0x3ffu;
+    v = (v | (v << 16)) & 0x030000ffu;
+    v = (v | (v << 8)) & 0x0300f00fu;
+    v = (v | (v << 4)) & 0x030c30c3u;
+    return (v | (v << 2)) & 0x09249249u;
+  }
+
+  void sortMorton(uint32_t begin, uint32_t end, const Bounds3& bounds) {
+    const vec3 scale = 1023.0f / glm::max(bounds.extent(), vec3(1e-30f));
+    auto code = [&](uint32_t i) {
+      const uvec3 c = uvec3(glm::clamp((positions[i] - bounds.lo) * scale, 0.0f, 1023.0f));
+      return spread10(c.x) | (spread10(c.y) << 1) | (spread10(c.z) << 2);
+    };
+    std::vector<std::pair<uint32_t, uint32_t>> keyed;
+    keyed.reserve(end - begin);
+    for (uint32_t k = begin; k < end; ++k) keyed.emplace_back(code(index[k]), index[k]);
+    std::sort(keyed.begin(), keyed.end());
+    for (uint32_t k = begin; k < end; ++k) index[k] = keyed[k - begin].second;
+  }
+
   // Splits [begin, end) at the median of `axis` in place; returns the split point.
   uint32_t splitMedian(uint32_t begin, uint32_t end, int axis) {
     uint32_t mid = begin + (end - begin) / 2;
@@ -56,9 +76,10 @@ struct Builder {
     const float largest = std::max({e.x, e.y, e.z});
     if (end - begin <= uint32_t(options.leaf_points) || largest <= options.min_size ||
         depth >= 60) {
-      // A leaf's points in a random (seeded, repeatable) order: every stride through a run of
-      // leaves is then a uniform subsample, which the splatting's level of detail relies on.
-      std::shuffle(index.begin() + begin, index.begin() + end, std::minstd_rand(begin + 1));
+      // A leaf's points in Morton order within its bounds: neighbours in the leaf are neighbours
+      // in space (the splatting's SIMD lanes then take similar paths), and a stride through
+      // the leaf is a spatially stratified subsample (the level of detail).
+      sortMorton(begin, end, node.bounds);
       nodes[node_index] = node;
       return;
     }

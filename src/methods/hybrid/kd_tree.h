@@ -3,8 +3,8 @@
 // the paper's eight-way recursion — until a node holds at most `leaf_points` points or its
 // largest extent is below `min_size`. Children are built in parallel (TBB). Node bounds are the
 // tight bounds of their points. The build reorders the points so that every leaf is one
-// contiguous range, which is how the splatting shader reads them, in a shuffled order (so that a
-// stride through leaves is a uniform subsample: the splatting's level of detail). The tree lives in
+// contiguous range, which is how the splatting shader reads them, in Morton order within the
+// leaf (coherent SIMD lanes; a stride through a leaf is a stratified subsample). The tree lives in
 // the points' object space: rigid (indeed any affine) motion moves the query, never the tree.
 #pragma once
 
