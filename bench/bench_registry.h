@@ -16,8 +16,9 @@ void rayBenchmark(benchmark::internal::Benchmark* b);
 void registerEmbreeBenchmarks();
 void registerFrameBenchmarks();  // RayTracer::render frames, BVH builds
 void registerEnvironmentBenchmarks();
-void registerGlBenchmarks();  // cube-map captures; skipped with a message without OpenGL 4.5
-void registerSrdmBenchmarks();  // the CPU and GPU SRDM builders (w = 256, n and m as the paper)
+void registerGlBenchmarks();      // cube-map captures; skipped with a message without OpenGL 4.5
+void registerSrdmBenchmarks();    // the CPU and GPU SRDM builders (w = 256, n and m as the paper)
+void registerHybridBenchmarks();  // the hybrid method's kd-tree build (the paper's six counts)
 
 // Records a benchmark group that could not run and why (in the JSON context and on stderr).
 void noteSkipped(const std::string& what, const std::string& why);

@@ -70,6 +70,7 @@ int main(int argc, char** argv) {
   registerEnvironmentBenchmarks();
   registerGlBenchmarks();
   registerSrdmBenchmarks();
+  registerHybridBenchmarks();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

@@ -46,15 +46,16 @@ struct Builder {
 
   void sortMorton(uint32_t begin, uint32_t end, const Bounds3& bounds) {
     const vec3 scale = 1023.0f / glm::max(bounds.extent(), vec3(1e-30f));
-    auto code = [&](uint32_t i) {
-      const uvec3 c = uvec3(glm::clamp((positions[i] - bounds.lo) * scale, 0.0f, 1023.0f));
-      return spread10(c.x) | (spread10(c.y) << 1) | (spread10(c.z) << 2);
-    };
-    std::vector<std::pair<uint32_t, uint32_t>> keyed;
-    keyed.reserve(end - begin);
-    for (uint32_t k = begin; k < end; ++k) keyed.emplace_back(code(index[k]), index[k]);
-    std::sort(keyed.begin(), keyed.end());
-    for (uint32_t k = begin; k < end; ++k) index[k] = keyed[k - begin].second;
+    // (code << 32 | index) keys: one integer sort, no allocation after a thread's first leaf.
+    thread_local std::vector<uint64_t> keys;
+    keys.clear();
+    for (uint32_t k = begin; k < end; ++k) {
+      const uvec3 c = uvec3(glm::clamp((positions[index[k]] - bounds.lo) * scale, 0.0f, 1023.0f));
+      const uint32_t code = spread10(c.x) | (spread10(c.y) << 1) | (spread10(c.z) << 2);
+      keys.push_back((uint64_t(code) << 32) | index[k]);
+    }
+    std::sort(keys.begin(), keys.end());
+    for (uint32_t k = begin; k < end; ++k) index[k] = uint32_t(keys[k - begin]);
   }
 
   // Splits [begin, end) at the median of `axis` in place; returns the split point.
