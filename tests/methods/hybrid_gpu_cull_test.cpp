@@ -14,6 +14,7 @@
 #include "methods/hybrid/kd_gpu_shared.h"
 #include "scene/builtin_scenes.h"
 #include "support/gl_test.h"
+#include "support/scenes.h"
 
 namespace mirage::test {
 namespace {
@@ -22,8 +23,7 @@ class HybridGpuCull : public GlTest {};
 
 // teapot-sphere without its floor, the teapot turned and moved: a non-identity object space.
 Scene movedObjects() {
-  Scene scene = makeBuiltinScene("teapot-sphere");
-  scene.instances.erase(scene.instances.begin());  // the floor comes first
+  Scene scene = teapotSphereObjectsOnly();
   for (Instance& inst : scene.instances)
     if (inst.name == "teapot") {
       Transform moved = inst.transform;

@@ -17,12 +17,8 @@ namespace {
 
 class HybridImages : public GlTest {};
 
-// teapot-sphere without its floor: the reflector pixels show the sky and the two objects, so
-// that the objects' reflections carry the error (the background cube map is exact for the sky).
 Scene objectsOnly() {
-  Scene scene = makeBuiltinScene("teapot-sphere");
-  scene.instances.erase(scene.instances.begin());  // the floor comes first
-  return scene;
+  return teapotSphereObjectsOnly();
 }
 
 const std::map<std::string, std::string> kDense = {{"points", "400000"}};

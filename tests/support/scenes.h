@@ -25,6 +25,14 @@ inline void finishScene(Scene& s, vec3 position, vec3 target, float fov_y_degree
   s.validate();
 }
 
+// teapot-sphere without its floor: the reflector pixels show the sky and the two objects, so
+// that the objects' reflections carry the error (a background cube map is exact for the sky).
+inline Scene teapotSphereObjectsOnly() {
+  Scene scene = makeBuiltinScene("teapot-sphere");
+  scene.instances.erase(scene.instances.begin());  // the floor comes first
+  return scene;
+}
+
 // One mirror sphere under the procedural sky and nothing else: every reflected ray leaves the
 // scene, so a light probe at infinity is exact.
 inline Scene mirrorSphereInSky() {
