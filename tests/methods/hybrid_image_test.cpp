@@ -103,6 +103,42 @@ TEST_F(HybridImages, RigidMotionKeepsTheTreesAndStaysCorrect) {
   EXPECT_TRUE(psnrAtLeast(after, fresh.cpu, 26.0, &fresh.cpu_ids, "hybrid-moved-vs-truth"));
 }
 
+// Points of closed objects that face away from a whole reflector triangle are skipped before
+// the cubic; they are hidden, so the frame stays as close to the ray tracer. An open surface
+// (a cup) keeps all of its points: its inside shows.
+TEST_F(HybridImages, BackFacingPointsOfClosedObjectsAreSkipped) {
+  const Scene scene = objectsOnly();
+  const ivec2 size{360, 256};
+  FrameRenderer renderer(scene, size);
+  std::map<std::string, double> cull, keep;
+  renderWith(renderer, scene, size, kDense, 0.0f, &cull);
+  std::map<std::string, std::string> params = kDense;
+  params["hybrid-backfaces"] = "keep";
+  renderWith(renderer, scene, size, params, 0.0f, &keep);
+  EXPECT_EQ(keep.at("points_facing_away"), 0.0);
+  EXPECT_GT(cull.at("points_facing_away"), 0.3 * cull.at("points_projected"));
+  EXPECT_LT(cull.at("projections"), 0.7 * keep.at("projections"));
+
+  FrameSettings settings;
+  settings.order = 1;
+  RenderPair culled = renderWithTruth(scene, "hybrid", size, settings, kDense);
+  RenderPair kept = renderWithTruth(scene, "hybrid", size, settings, params);
+  std::printf("reflector PSNR: back faces culled %.2f dB, kept %.2f dB\n", reflectorPsnr(culled),
+              reflectorPsnr(kept));
+  EXPECT_GT(reflectorPsnr(culled), reflectorPsnr(kept) - 0.2);
+
+  // An open cup (a lathe without a bottom cap) beside a mirror sphere: never culled.
+  Scene cup = mirrorSphereInSky();
+  const int mesh = addMesh(cup, procedural::lathe({{0.3f, 0.0f}, {0.35f, 0.4f}}, 32));
+  const int material = addMaterial(cup, Material::diffuse("cup", {0.8f, 0.3f, 0.2f}));
+  addInstance(cup, "cup", mesh, material, placeAt({1.2f, -0.2f, 0.6f}));
+  FrameRenderer cup_renderer(cup, size);
+  std::map<std::string, double> open;
+  renderWith(cup_renderer, cup, size, {{"points", "20000"}}, 0.0f, &open);
+  EXPECT_GT(open.at("projections"), 0.0);
+  EXPECT_EQ(open.at("points_facing_away"), 0.0);
+}
+
 TEST_F(HybridImages, NoPointSampledObjectsShowsTheBackgroundOnly) {
   // Only a mirror sphere and the sky: zero points is a documented case, not an error.
   const Scene scene = mirrorSphereInSky();
