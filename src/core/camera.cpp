@@ -41,6 +41,35 @@ vec3 View::project(const vec3& world) const {
               depth);
 }
 
+View View::mirrored(const vec3& point, const vec3& normal) const {
+  const vec3 n = glm::normalize(normal);
+  const float offset = glm::dot(n, point);
+  const float eye_side = glm::dot(n, eye_) - offset;
+  if (!(eye_side > 0.0f)) throwRuntime("mirrored view: the eye is not in front of the mirror");
+  // The reflection in the plane n·x = offset: x - 2 (n·x - offset) n.
+  mat4 reflection(1.0f);
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) reflection[c][r] -= 2.0f * n[c] * n[r];
+  reflection[3] = vec4(2.0f * offset * n, 1.0f);
+  View m = *this;
+  m.eye_ = vec3(reflection * vec4(eye_, 1.0f));
+  m.forward_ = glm::reflect(forward_, n);
+  m.right_ = glm::reflect(right_, n);
+  m.up_ = glm::reflect(up_, n);
+  m.view_ = view_ * reflection;
+  // Lengyel's oblique near plane: the mirror plane (the kept side towards the real eye) in the
+  // mirrored camera's space replaces the near plane; the far plane follows obliquely.
+  const vec4 plane_world(n, -offset);
+  const vec4 c = glm::transpose(glm::inverse(m.view_)) * plane_world;
+  mat4& p = m.projection_;
+  const vec4 q =
+      glm::inverse(p) * vec4(c.x > 0.0f ? 1.0f : (c.x < 0.0f ? -1.0f : 0.0f),
+                             c.y > 0.0f ? 1.0f : (c.y < 0.0f ? -1.0f : 0.0f), 1.0f, 1.0f);
+  const vec4 scaled = c * (2.0f / glm::dot(c, q));
+  for (int col = 0; col < 4; ++col) p[col][2] = scaled[col] - p[col][3];
+  return m;
+}
+
 CameraDesc frameBounds(const vec3& center, float radius, const vec3& from_direction,
                        float fov_y_degrees) {
   CameraDesc c;

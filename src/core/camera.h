@@ -47,6 +47,13 @@ class View {
   // The pixel position (top-left origin) that a world point projects to; z is the view depth.
   vec3 project(const vec3& world) const;
 
+  // This view seen in the planar mirror through `point` with unit `normal` (towards this view's
+  // eye): the camera reflected in the plane, view matrix V·R with R the reflection (determinant
+  // -1: windings flip), so that pixel (x, y) shows what this view sees at (x, y) in the mirror;
+  // its near plane is the mirror plane (an oblique projection, Lengyel), so nothing behind the
+  // mirror is drawn. Throws when the eye is not in front of the plane.
+  View mirrored(const vec3& point, const vec3& normal) const;
+
  private:
   ivec2 size_{1, 1};
   vec3 eye_{0.0f}, forward_{0.0f, 0.0f, -1.0f}, right_{1.0f, 0.0f, 0.0f}, up_{0.0f, 1.0f, 0.0f};

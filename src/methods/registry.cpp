@@ -10,6 +10,7 @@
 #include "methods/hybrid/hybrid_method.h"
 #include "methods/method.h"
 #include "methods/none/none_method.h"
+#include "methods/planar/planar_method.h"
 #include "methods/raytrace/raytrace_method.h"
 
 namespace mirage {
@@ -18,7 +19,7 @@ const std::vector<MethodEntry>& methodRegistry() {
   static const std::vector<MethodEntry> registry = {
       noneMethodEntry(),      envmapInfiniteMethodEntry(), envmapMethodEntry(),
       envmapBoxMethodEntry(), billboardMethodEntry(),      depthmapMethodEntry(),
-      hybridMethodEntry(),         raytraceMethodEntry(),
+      hybridMethodEntry(),    planarMethodEntry(),         raytraceMethodEntry(),
   };
   return registry;
 }

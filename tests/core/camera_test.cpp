@@ -46,5 +46,37 @@ TEST(View, RejectsDegenerateCameras) {
   EXPECT_THROW(View(testCamera(), {0, 10}), InputError);
 }
 
+// A view mirrored in a plane shows at pixel (x, y) what the view sees at (x, y) in the mirror:
+// a point in front of the mirror projects where its mirror image projects in the original view;
+// its view matrix has determinant -1; the mirror plane is its near plane (points behind the
+// mirror fall before it, in front after it); and the primary rays are the reflected ones.
+TEST(View, MirroredViewSeesThroughTheMirror) {
+  CameraDesc c;
+  c.position = {1.0f, 1.5f, 4.0f};
+  c.target = {-0.5f, 1.0f, 0.0f};
+  const View v(c, {320, 240});
+  const vec3 point(0.2f, 1.0f, -1.0f), normal = glm::normalize(vec3(0.1f, 0.0f, 1.0f));
+  const View m = v.mirrored(point, normal);
+  auto reflect = [&](vec3 x) { return x - 2.0f * glm::dot(x - point, normal) * normal; };
+  EXPECT_LT(glm::length(m.eye() - reflect(v.eye())), 1e-5f);
+  EXPECT_NEAR(glm::determinant(mat3(m.viewMatrix())), -1.0f, 1e-5f);
+  for (vec3 q : {vec3(0.0f, 1.2f, 0.5f), vec3(-0.8f, 0.6f, 2.0f), vec3(0.5f, 1.4f, -0.5f)}) {
+    ASSERT_GT(glm::dot(q - point, normal), 0.0f);
+    const vec3 in_mirror = m.project(q), in_view = v.project(reflect(q));
+    EXPECT_NEAR(in_mirror.x, in_view.x, 1e-3f);
+    EXPECT_NEAR(in_mirror.y, in_view.y, 1e-3f);
+    const vec4 clip = m.viewProjection() * vec4(q, 1.0f);
+    EXPECT_GT(clip.z / clip.w, -1.0f);  // after the near plane: drawn
+    EXPECT_LT(clip.z / clip.w, 1.0f);
+  }
+  const vec3 behind = point - 0.3f * normal + vec3(0.1f, 0.1f, 0.0f);
+  const vec4 clip = m.viewProjection() * vec4(behind, 1.0f);
+  EXPECT_LT(clip.z / clip.w, -1.0f);  // before the near plane: clipped
+  const Ray ray = v.primaryRay(100.0f, 80.0f), mirrored_ray = m.primaryRay(100.0f, 80.0f);
+  EXPECT_LT(glm::length(mirrored_ray.direction - glm::reflect(ray.direction, normal)), 1e-5f);
+  // An eye behind the mirror has no mirrored view.
+  EXPECT_THROW(v.mirrored(point, -normal), Error);
+}
+
 }  // namespace
 }  // namespace mirage

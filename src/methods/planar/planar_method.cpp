@@ -1,0 +1,133 @@
+#include "methods/planar/planar_method.h"
+
+#include <algorithm>
+#include <memory>
+
+namespace mirage {
+
+namespace {
+
+class PlanarMethod final : public Method {
+ public:
+  explicit PlanarMethod(const MethodSetup& setup)
+      : info_(setup.info),
+        program_(gpu::Program::graphics("render/shaders/scene.vert", "methods/planar/planar.frag")),
+        base_program_(
+            gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")) {
+    const Scene& scene = setup.gpu.scene();
+    for (int i : scene.reflectorInstances()) {
+      if (isPlanarInstance(scene, i, scene.instances[size_t(i)].matrixAt(0.0f)))
+        planar_.push_back(i);
+      else
+        ++not_planar_;
+    }
+  }
+
+  const MethodInfo& info() const override { return info_; }
+
+  void update(FrameContext&) override {}  // nothing captured: every frame is drawn anew
+
+  void render(FrameContext& frame) override {
+    frame.passes.drawDirect();
+    frame.beginPart(gpu::Part::kReflect);
+    mirrored_views_ = 0;
+    drawReflectors(frame, frame.view, frame.target, frame.settings.order, 0, -1);
+  }
+
+  std::map<std::string, double> stats() const override {
+    return {{"planar_reflectors", double(planar_.size())},
+            {"reflectors_not_planar", double(not_planar_)},
+            {"mirrored_views", double(mirrored_views_)}};
+  }
+
+ private:
+  // Draws every reflector of `view` into `target` (its direct part already drawn): each planar
+  // one facing the eye shows the scene rendered from the eye mirrored in it, with `order` - 1
+  // more bounces inside; the rest, and all of them at order 0, show their base colour.
+  // `level` picks the images of this depth of recursion; `from` is the mirror `view` was
+  // mirrored in (it cannot see itself).
+  void drawReflectors(FrameContext& frame, const View& view, const FrameTarget& target, int order,
+                      int level, int from) {
+    std::vector<std::pair<int, const FrameTarget*>> shown;
+    if (order > 0) {
+      for (size_t k = 0; k < planar_.size(); ++k) {
+        const int mirror = planar_[k];
+        if (mirror == from) continue;
+        vec3 point, normal;
+        if (!facingPlane(frame, mirror, view.eye(), point, normal)) continue;
+        const View mirrored = view.mirrored(point, normal);
+        const FrameTarget& image = imageFor(level, k, view.size());
+        image.bind();
+        image.clear();
+        frame.passes.begin(mirrored, frame.settings);
+        frame.passes.drawDirect();
+        ++mirrored_views_;
+        drawReflectors(frame, mirrored, image, order - 1, level + 1, mirror);
+        shown.emplace_back(mirror, &image);
+      }
+    }
+    target.bind();
+    frame.passes.begin(view, frame.settings);
+    base_program_.use();
+    const Scene& scene = frame.gpu.scene();
+    for (int i : scene.reflectorInstances()) {
+      const bool with_image =
+          std::any_of(shown.begin(), shown.end(), [&](const auto& s) { return s.first == i; });
+      // The mirror this view is mirrored in lies on its near plane: never drawn in it.
+      if (!with_image && i != from) frame.gpu.draw(i);
+    }
+    program_.use();
+    for (const auto& [mirror, image] : shown) {
+      image->color().bind(MIRAGE_UNIT_METHOD);
+      frame.gpu.draw(mirror);
+    }
+  }
+
+  // The plane of a planar reflector now (a point on it and the unit normal towards `eye`);
+  // false when the eye is on it (edge-on: the mirror shows nothing).
+  static bool facingPlane(FrameContext& frame, int mirror, const vec3& eye, vec3& point,
+                          vec3& normal) {
+    const Scene& scene = frame.gpu.scene();
+    const mat4& model = frame.gpu.instanceMatrices()[size_t(mirror)];
+    if (!isPlanarInstance(scene, mirror, model, &normal)) return false;
+    const Mesh& mesh = scene.meshes[size_t(scene.instances[size_t(mirror)].mesh)];
+    point = vec3(model * vec4(mesh.bounds().center(), 1.0f));
+    const float side = glm::dot(normal, eye - point);
+    if (std::abs(side) <= 1e-6f * std::max(glm::length(eye - point), 1e-6f)) return false;
+    if (side < 0.0f) normal = -normal;
+    return true;
+  }
+
+  // The image of mirror k at recursion depth `level`, made on first use.
+  const FrameTarget& imageFor(int level, size_t k, ivec2 size) {
+    if (images_.size() <= size_t(level)) images_.resize(size_t(level) + 1);
+    auto& row = images_[size_t(level)];
+    if (row.size() < planar_.size()) row.resize(planar_.size());
+    if (!row[k] || row[k]->size() != size) row[k] = std::make_unique<FrameTarget>(size);
+    return *row[k];
+  }
+
+  const MethodInfo& info_;
+  gpu::Program program_, base_program_;
+  std::vector<int> planar_;
+  int not_planar_ = 0;
+  long mirrored_views_ = 0;
+  std::vector<std::vector<std::unique_ptr<FrameTarget>>> images_;
+};
+
+}  // namespace
+
+MethodEntry planarMethodEntry() {
+  MethodEntry entry;
+  entry.info.name = "planar";
+  entry.info.description =
+      "exact planar mirrors by re-rendering the scene from the mirrored eye, the mirror plane as "
+      "an oblique near plane, recursing to the reflection order (forward-mapped mirrors paper's "
+      "baseline); non-planar reflectors show their base colour";
+  entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
+    return std::make_unique<PlanarMethod>(setup);
+  };
+  return entry;
+}
+
+}  // namespace mirage

@@ -1,0 +1,69 @@
+// Method `planar` (the re-rendering baseline of the forward-mapped planar mirror paper) against
+// the ray tracer: exact on planar mirrors at every order, mirrors in mirrors included; reflectors
+// that are not planar show their base colour. On failure the actual/expected/diff images are
+// written under build/<preset>/test-artifacts/.
+#include <gtest/gtest.h>
+
+#include "methods/frame.h"
+#include "scene/builtin_scenes.h"
+#include "support/gl_test.h"
+#include "support/image_check.h"
+#include "support/render_pair.h"
+
+namespace mirage::test {
+namespace {
+
+class PlanarImages : public GlTest {};
+
+std::map<std::string, double> statsOf(const Scene& scene, ivec2 size, int order) {
+  FrameRenderer renderer(scene, size);
+  FrameSettings settings;
+  settings.order = order;
+  auto method = renderer.createMethod("planar", {}, settings);
+  renderer.render(*method, View(scene.camera(), size), 0.0f, settings);
+  return method->stats();
+}
+
+TEST_F(PlanarImages, MirrorRoomIsExact) {
+  const Scene scene = makeBuiltinScene("mirror-room");
+  FrameSettings settings;
+  settings.order = 1;
+  RenderPair p = renderWithTruth(scene, "planar", {320, 240}, settings);
+  std::printf("mirror-room reflector PSNR: %.2f dB\n", reflectorPsnr(p));
+  // Measured at 720x512: 107.9 dB on the mirror (the issue asks for 40).
+  EXPECT_GE(reflectorPsnr(p), 40.0);
+  EXPECT_TRUE(psnrAtLeast(p.gpu, p.cpu, 40.0, nullptr, "planar-mirror-room"));
+}
+
+// Two facing mirrors: each order adds the mirror seen in the other mirror.
+TEST_F(PlanarImages, MirrorsInMirrorsRecurseToTheOrder) {
+  const Scene scene = makeBuiltinScene("two-mirrors");
+  for (int order : {1, 2, 4}) {
+    FrameSettings settings;
+    settings.order = order;
+    RenderPair p = renderWithTruth(scene, "planar", {320, 240}, settings);
+    std::printf("two-mirrors order %d: reflector PSNR %.2f dB\n", order, reflectorPsnr(p));
+    // Measured at 720x512: 50.7, 46.5 and 45.5 dB.
+    EXPECT_GE(reflectorPsnr(p), 40.0) << "order " << order;
+  }
+  // One mirrored view per visible mirror, then one per mirror seen in it, and so on.
+  const double order1 = statsOf(scene, {160, 120}, 1).at("mirrored_views");
+  const double order2 = statsOf(scene, {160, 120}, 2).at("mirrored_views");
+  EXPECT_GE(order1, 1.0);
+  EXPECT_GT(order2, order1);
+}
+
+TEST_F(PlanarImages, ReflectorsThatAreNotPlanarShowTheirBaseColour) {
+  const Scene scene = makeBuiltinScene("teapot-sphere");
+  const auto stats = statsOf(scene, {160, 120}, 2);
+  EXPECT_GE(stats.at("reflectors_not_planar"), 1.0);
+  EXPECT_EQ(stats.at("mirrored_views"), 0.0);
+  FrameSettings settings;
+  settings.order = 1;
+  RenderPair planar = renderWithTruth(scene, "planar", {160, 120}, settings);
+  RenderPair none = renderWithTruth(scene, "none", {160, 120}, settings);
+  EXPECT_TRUE(psnrAtLeast(planar.gpu, none.gpu, 60.0, nullptr, "planar-not-planar"));
+}
+
+}  // namespace
+}  // namespace mirage::test
