@@ -57,9 +57,17 @@ View View::mirrored(const vec3& point, const vec3& normal) const {
   m.right_ = glm::reflect(right_, n);
   m.up_ = glm::reflect(up_, n);
   m.view_ = view_ * reflection;
-  // Lengyel's oblique near plane: the mirror plane (the kept side towards the real eye) in the
-  // mirrored camera's space replaces the near plane; the far plane follows obliquely.
-  const vec4 plane_world(n, -offset);
+  return m.clippedAt(point, n);
+}
+
+View View::clippedAt(const vec3& point, const vec3& normal) const {
+  const vec3 n = glm::normalize(normal);
+  if (!(glm::dot(n, point - eye_) > 0.0f))
+    throwRuntime("clipped view: the eye is not behind the clipping plane");
+  // Lengyel's oblique near plane: the plane (kept side along n) in camera space replaces the
+  // near plane; the far plane follows obliquely.
+  View m = *this;
+  const vec4 plane_world(n, -glm::dot(n, point));
   const vec4 c = glm::transpose(glm::inverse(m.view_)) * plane_world;
   mat4& p = m.projection_;
   const vec4 q =

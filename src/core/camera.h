@@ -53,6 +53,10 @@ class View {
   // its near plane is the mirror plane (an oblique projection, Lengyel), so nothing behind the
   // mirror is drawn. Throws when the eye is not in front of the plane.
   View mirrored(const vec3& point, const vec3& normal) const;
+  // This view with the plane through `point` with normal `normal` (pointing away from the eye,
+  // towards what is kept) as its near plane: an oblique projection (Lengyel). Throws when the
+  // eye is not behind the plane.
+  View clippedAt(const vec3& point, const vec3& normal) const;
 
  private:
   ivec2 size_{1, 1};

@@ -12,6 +12,7 @@
 #include "methods/none/none_method.h"
 #include "methods/planar/planar_method.h"
 #include "methods/raytrace/raytrace_method.h"
+#include "methods/zexel/zexel_method.h"
 
 namespace mirage {
 
@@ -19,7 +20,8 @@ const std::vector<MethodEntry>& methodRegistry() {
   static const std::vector<MethodEntry> registry = {
       noneMethodEntry(),      envmapInfiniteMethodEntry(), envmapMethodEntry(),
       envmapBoxMethodEntry(), billboardMethodEntry(),      depthmapMethodEntry(),
-      hybridMethodEntry(),    planarMethodEntry(),         raytraceMethodEntry(),
+      hybridMethodEntry(),    planarMethodEntry(),         zexelMethodEntry(),
+      raytraceMethodEntry(),
   };
   return registry;
 }

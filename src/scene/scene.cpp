@@ -115,6 +115,17 @@ bool isPlanarInstance(const Scene& scene, int instance, const mat4& model, vec3*
   return true;
 }
 
+bool planarInstancePlane(const Scene& scene, int instance, const mat4& model, const vec3& eye,
+                         vec3& point, vec3& normal) {
+  if (!isPlanarInstance(scene, instance, model, &normal)) return false;
+  const Mesh& mesh = scene.meshes[size_t(scene.instances[size_t(instance)].mesh)];
+  point = vec3(model * vec4(mesh.bounds().center(), 1.0f));
+  const float side = glm::dot(normal, eye - point);
+  if (std::abs(side) <= 1e-6f * std::max(glm::length(eye - point), 1e-6f)) return false;
+  if (side < 0.0f) normal = -normal;
+  return true;
+}
+
 vec3 sampleTexture(const Image& img, vec2 uv) {
   float x = uv.x * float(img.width()) - 0.5f, y = (1.0f - uv.y) * float(img.height()) - 0.5f;
   int x0 = int(std::floor(x)), y0 = int(std::floor(y));

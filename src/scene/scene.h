@@ -83,6 +83,11 @@ struct Scene {
 // The instance's mesh is flat (its thinnest bounds extent below 1e-4 of its largest): then
 // `normal` receives its world-space plane normal under `model`.
 bool isPlanarInstance(const Scene& scene, int instance, const mat4& model, vec3* normal = nullptr);
+// The plane of a planar instance under `model`: the centre of its mesh's bounds (on the plane)
+// and the unit normal turned towards `eye`; false when the instance is not planar or `eye` lies
+// in its plane (edge-on).
+bool planarInstancePlane(const Scene& scene, int instance, const mat4& model, const vec3& eye,
+                         vec3& point, vec3& normal);
 
 // A texture's value at `uv`: bilinear, repeating, level 0 (what the GPU samples at level 0 with
 // GL_REPEAT; the image's row 0 is at v = 1).

@@ -11,7 +11,8 @@ class PlanarMethod final : public Method {
  public:
   explicit PlanarMethod(const MethodSetup& setup)
       : info_(setup.info),
-        program_(gpu::Program::graphics("render/shaders/scene.vert", "methods/planar/planar.frag")),
+        program_(gpu::Program::graphics("render/shaders/scene.vert",
+                                        "render/shaders/mirror_image.frag")),
         base_program_(
             gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")) {
     const Scene& scene = setup.gpu.scene();
@@ -54,7 +55,10 @@ class PlanarMethod final : public Method {
         const int mirror = planar_[k];
         if (mirror == from) continue;
         vec3 point, normal;
-        if (!facingPlane(frame, mirror, view.eye(), point, normal)) continue;
+        if (!planarInstancePlane(frame.gpu.scene(), mirror,
+                                 frame.gpu.instanceMatrices()[size_t(mirror)], view.eye(), point,
+                                 normal))
+          continue;
         const View mirrored = view.mirrored(point, normal);
         const FrameTarget& image = imageFor(level, k, view.size());
         image.bind();
@@ -81,21 +85,6 @@ class PlanarMethod final : public Method {
       image->color().bind(MIRAGE_UNIT_METHOD);
       frame.gpu.draw(mirror);
     }
-  }
-
-  // The plane of a planar reflector now (a point on it and the unit normal towards `eye`);
-  // false when the eye is on it (edge-on: the mirror shows nothing).
-  static bool facingPlane(FrameContext& frame, int mirror, const vec3& eye, vec3& point,
-                          vec3& normal) {
-    const Scene& scene = frame.gpu.scene();
-    const mat4& model = frame.gpu.instanceMatrices()[size_t(mirror)];
-    if (!isPlanarInstance(scene, mirror, model, &normal)) return false;
-    const Mesh& mesh = scene.meshes[size_t(scene.instances[size_t(mirror)].mesh)];
-    point = vec3(model * vec4(mesh.bounds().center(), 1.0f));
-    const float side = glm::dot(normal, eye - point);
-    if (std::abs(side) <= 1e-6f * std::max(glm::length(eye - point), 1e-6f)) return false;
-    if (side < 0.0f) normal = -normal;
-    return true;
   }
 
   // The image of mirror k at recursion depth `level`, made on first use.
