@@ -1,0 +1,116 @@
+#include "methods/zexel/zexel_cpu_warper.h"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <limits>
+
+#include <tbb/parallel_for.h>
+
+#include "methods/zexel/zexel_warp_shared.h"
+
+namespace mirage {
+
+namespace {
+
+// Where zexel (x, y) lands: (u, v, depth over the output plane distance); depth <= 0 when it
+// saw nothing or lands behind the output camera.
+vec3 landing(const ZexelMap2D& map, const mat3& po_inverse, const WarpCamera& in,
+             const WarpCamera& out, int x, int y) {
+  const vec4& t = map.texels[size_t(y) * size_t(map.width) + size_t(x)];
+  if (!(t.w > 0.0f) || t.w >= map.sky) return vec3(0.0f, 0.0f, -1.0f);
+  const vec2 xi(float(x) + 0.5f, float(y) + 0.5f);
+  const float delta = shading::zexel_disparity_from_distance(in.p, xi, t.w);
+  return shading::zexel_warp(po_inverse, in.p, in.c, out.c, delta, xi);
+}
+
+// The s x s block of pixels whose centres are nearest (u, v), clipped to the image.
+template <typename Write>
+void splatAt(vec2 uv, int splat, ivec2 size, Write&& write) {
+  const int x0 = int(std::floor(uv.x - 0.5f * float(splat - 1)));
+  const int y0 = int(std::floor(uv.y - 0.5f * float(splat - 1)));
+  for (int dy = 0; dy < splat; ++dy)
+    for (int dx = 0; dx < splat; ++dx) {
+      const int px = x0 + dx, py = y0 + dy;
+      if (px >= 0 && py >= 0 && px < size.x && py < size.y)
+        write(size_t(py) * size_t(size.x) + size_t(px));
+    }
+}
+
+// One sheet: columns [x_begin, x_end) and rows [y_begin, y_end) walked in the given directions.
+struct Sheet {
+  int x_from, x_to, x_step, y_from, y_to, y_step;  // inclusive from, exclusive to
+};
+
+}  // namespace
+
+std::vector<uint32_t> warpOcclusionCompatible(const ZexelMap2D& map, const WarpCamera& in,
+                                              const WarpCamera& out, ivec2 size,
+                                              const WarpOptions& options) {
+  std::vector<std::atomic<uint32_t>> shown(size_t(size.x) * size_t(size.y));
+  for (auto& s : shown) s.store(kNoZexel, std::memory_order_relaxed);
+  const mat3 po_inverse = glm::inverse(out.p);
+  // The epipole: the output centre seen from the reference camera, homogeneous.
+  const vec3 e = glm::inverse(in.p) * (out.c - in.c);
+  const bool positive = e.z > 0.0f;
+  const float big = 1e9f;
+  const float ex = e.z != 0.0f ? std::clamp(e.x / e.z, -big, big) : (e.x >= 0.0f ? big : -big);
+  const float ey = e.z != 0.0f ? std::clamp(e.y / e.z, -big, big) : (e.y >= 0.0f ? big : -big);
+  // The column and row the epipole falls in, clamped to [0, size]: sheets are the quadrants.
+  const int cx = int(std::clamp(std::floor(ex), 0.0f, float(map.width)));
+  const int cy = int(std::clamp(std::floor(ey), 0.0f, float(map.height)));
+  // Toward the epipole (positive) or away from it (negative), per quadrant.
+  auto walk = [&](int lo, int hi, bool below_epipole) {
+    const bool ascending = positive == below_epipole;  // toward the epipole from below: up
+    return ascending ? std::array<int, 3>{lo, hi, 1} : std::array<int, 3>{hi - 1, lo - 1, -1};
+  };
+  std::vector<Sheet> sheets;
+  for (int qx = 0; qx < 2; ++qx)
+    for (int qy = 0; qy < 2; ++qy) {
+      const int x_lo = qx == 0 ? 0 : cx, x_hi = qx == 0 ? cx : map.width;
+      const int y_lo = qy == 0 ? 0 : cy, y_hi = qy == 0 ? cy : map.height;
+      if (x_lo >= x_hi || y_lo >= y_hi) continue;
+      const auto wx = walk(x_lo, x_hi, qx == 0), wy = walk(y_lo, y_hi, qy == 0);
+      sheets.push_back({wx[0], wx[1], wx[2], wy[0], wy[1], wy[2]});
+    }
+  auto run = [&](const Sheet& s) {
+    for (int y = s.y_from; y != s.y_to; y += s.y_step)
+      for (int x = s.x_from; x != s.x_to; x += s.x_step) {
+        const vec3 o = landing(map, po_inverse, in, out, x, y);
+        if (!(o.z > 0.0f)) continue;
+        const uint32_t index = uint32_t(y) * uint32_t(map.width) + uint32_t(x);
+        splatAt(vec2(o), options.splat, size,
+                [&](size_t pixel) { shown[pixel].store(index, std::memory_order_relaxed); });
+      }
+  };
+  if (options.parallel)
+    tbb::parallel_for(size_t(0), sheets.size(), [&](size_t i) { run(sheets[i]); });
+  else
+    for (const Sheet& s : sheets) run(s);
+  std::vector<uint32_t> result(shown.size());
+  for (size_t i = 0; i < shown.size(); ++i) result[i] = shown[i].load(std::memory_order_relaxed);
+  return result;
+}
+
+std::vector<uint32_t> warpZBuffered(const ZexelMap2D& map, const WarpCamera& in,
+                                    const WarpCamera& out, ivec2 size, int splat) {
+  std::vector<uint32_t> shown(size_t(size.x) * size_t(size.y), kNoZexel);
+  std::vector<float> depth(shown.size(), std::numeric_limits<float>::infinity());
+  const mat3 po_inverse = glm::inverse(out.p);
+  for (int y = 0; y < map.height; ++y)
+    for (int x = 0; x < map.width; ++x) {
+      const vec3 o = landing(map, po_inverse, in, out, x, y);
+      if (!(o.z > 0.0f)) continue;
+      const uint32_t index = uint32_t(y) * uint32_t(map.width) + uint32_t(x);
+      splatAt(vec2(o), splat, size, [&](size_t pixel) {
+        if (o.z < depth[pixel]) {
+          depth[pixel] = o.z;
+          shown[pixel] = index;
+        }
+      });
+    }
+  return shown;
+}
+
+}  // namespace mirage
