@@ -57,4 +57,11 @@ struct QueryTraits {
   static void destroy(GLuint id) { glDeleteQueries(1, &id); }
 };
 
+// A new vertex array object (empty: attribute-less draws, or set up by the caller).
+inline Handle<VertexArrayTraits> createVertexArray() {
+  GLuint vao = 0;
+  glCreateVertexArrays(1, &vao);
+  return Handle<VertexArrayTraits>(vao);
+}
+
 }  // namespace mirage::gpu

@@ -32,9 +32,8 @@ GpuScene::GpuScene(const Scene& scene, const EnvironmentMap& environment)
     g.vertices = gpu::Buffer::fromSpan<Vertex>(vertices);
     g.indices = gpu::Buffer::fromSpan<uvec3>(mesh.triangles);
     g.index_count = GLsizei(mesh.triangles.size() * 3);
-    GLuint vao = 0;
-    glCreateVertexArrays(1, &vao);
-    g.vao = gpu::Handle<gpu::VertexArrayTraits>(vao);
+    g.vao = gpu::createVertexArray();
+    const GLuint vao = g.vao.id();
     glVertexArrayVertexBuffer(vao, 0, g.vertices.id(), 0, sizeof(Vertex));
     glVertexArrayElementBuffer(vao, g.indices.id());
     const GLuint offsets[] = {offsetof(Vertex, position), offsetof(Vertex, normal),

@@ -22,11 +22,8 @@ ScenePasses::ScenePasses(GpuScene& scene)
       background_(gpu::Program::graphics("render/shaders/fullscreen.vert",
                                          "render/shaders/background.frag")),
       diffuse_(gpu::Program::graphics("render/shaders/scene.vert", "render/shaders/diffuse.frag")),
-      frame_buffer_(sizeof(shading::FrameData)) {
-  GLuint vao = 0;
-  glCreateVertexArrays(1, &vao);
-  empty_vao_ = gpu::Handle<gpu::VertexArrayTraits>(vao);
-}
+      frame_buffer_(sizeof(shading::FrameData)),
+      empty_vao_(gpu::createVertexArray()) {}
 
 void ScenePasses::begin(const View& view, const FrameSettings& settings) {
   frame_ = makeFrameData(view, scene_.scene(), scene_.time(), settings,

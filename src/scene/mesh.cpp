@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <tuple>
 #include <unordered_map>
 
 #include <tbb/parallel_sort.h>
@@ -165,10 +166,8 @@ double boundaryEdgeFraction(const Mesh& mesh) {
     glm::i64vec3 cell;
     uint32_t index;
     bool operator<(const Keyed& o) const {
-      if (cell.x != o.cell.x) return cell.x < o.cell.x;
-      if (cell.y != o.cell.y) return cell.y < o.cell.y;
-      if (cell.z != o.cell.z) return cell.z < o.cell.z;
-      return index < o.index;
+      return std::tie(cell.x, cell.y, cell.z, index) <
+             std::tie(o.cell.x, o.cell.y, o.cell.z, o.index);
     }
   };
   std::vector<Keyed> keyed(mesh.positions.size());

@@ -115,6 +115,19 @@ bool isPlanarInstance(const Scene& scene, int instance, const mat4& model, vec3*
   return true;
 }
 
+std::vector<int> planarReflectors(const Scene& scene, int* not_planar) {
+  std::vector<int> planar;
+  int others = 0;
+  for (int i : scene.reflectorInstances()) {
+    if (isPlanarInstance(scene, i, scene.instances[size_t(i)].matrixAt(0.0f)))
+      planar.push_back(i);
+    else
+      ++others;
+  }
+  if (not_planar) *not_planar = others;
+  return planar;
+}
+
 bool planarInstancePlane(const Scene& scene, int instance, const mat4& model, const vec3& eye,
                          vec3& point, vec3& normal) {
   if (!isPlanarInstance(scene, instance, model, &normal)) return false;

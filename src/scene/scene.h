@@ -83,6 +83,10 @@ struct Scene {
 // The instance's mesh is flat (its thinnest bounds extent below 1e-4 of its largest): then
 // `normal` receives its world-space plane normal under `model`.
 bool isPlanarInstance(const Scene& scene, int instance, const mat4& model, vec3* normal = nullptr);
+// The reflector instances that are planar at time 0, in order; `not_planar` (when given)
+// receives how many others there are.
+std::vector<int> planarReflectors(const Scene& scene, int* not_planar = nullptr);
+
 // The plane of a planar instance under `model`: the centre of its mesh's bounds (on the plane)
 // and the unit normal turned towards `eye`; false when the instance is not planar or `eye` lies
 // in its plane (edge-on).

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <random>
 
 #include <tbb/parallel_for.h>
@@ -124,6 +125,7 @@ std::vector<PointSet> samplePoints(const Scene& scene, const std::vector<int>& i
     if (vertices < options.minimum) total = options.minimum;
   }
   std::vector<PointSet> sets;
+  std::map<int, bool> closed_meshes;  // mesh index -> closed surface
   long long assigned = 0;
   for (size_t k = 0; k < instances.size(); ++k) {
     const Instance& inst = scene.instances[size_t(instances[k])];
@@ -153,7 +155,10 @@ std::vector<PointSet> samplePoints(const Scene& scene, const std::vector<int>& i
       const double object_area = object.empty() ? 0.0 : object.back();
       set.spacing = float(std::sqrt(object_area / double(set.size())));
       // Scanned meshes keep a few small holes; through them one sees only a sliver of inside.
-      set.closed = boundaryEdgeFraction(mesh) <= 0.01;
+      const int mesh_index = scene.instances[size_t(instances[k])].mesh;
+      auto [known, added] = closed_meshes.try_emplace(mesh_index, false);
+      if (added) known->second = boundaryEdgeFraction(mesh) <= 0.01;  // once per mesh
+      set.closed = known->second;
       sets.push_back(std::move(set));
     }
   }

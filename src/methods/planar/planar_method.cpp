@@ -1,7 +1,8 @@
 #include "methods/planar/planar_method.h"
 
-#include <algorithm>
 #include <memory>
+
+#include "render/mirror_images.h"
 
 namespace mirage {
 
@@ -14,15 +15,8 @@ class PlanarMethod final : public Method {
         program_(gpu::Program::graphics("render/shaders/scene.vert",
                                         "render/shaders/mirror_image.frag")),
         base_program_(
-            gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")) {
-    const Scene& scene = setup.gpu.scene();
-    for (int i : scene.reflectorInstances()) {
-      if (isPlanarInstance(scene, i, scene.instances[size_t(i)].matrixAt(0.0f)))
-        planar_.push_back(i);
-      else
-        ++not_planar_;
-    }
-  }
+            gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")),
+        planar_(planarReflectors(setup.gpu.scene(), &not_planar_)) {}
 
   const MethodInfo& info() const override { return info_; }
 
@@ -49,7 +43,7 @@ class PlanarMethod final : public Method {
   // mirrored in (it cannot see itself).
   void drawReflectors(FrameContext& frame, const View& view, const FrameTarget& target, int order,
                       int level, int from) {
-    std::vector<std::pair<int, const FrameTarget*>> shown;
+    std::vector<MirrorImage> shown;
     if (order > 0) {
       for (size_t k = 0; k < planar_.size(); ++k) {
         const int mirror = planar_[k];
@@ -67,24 +61,13 @@ class PlanarMethod final : public Method {
         frame.passes.drawDirect();
         ++mirrored_views_;
         drawReflectors(frame, mirrored, image, order - 1, level + 1, mirror);
-        shown.emplace_back(mirror, &image);
+        shown.push_back({mirror, &image});
       }
     }
     target.bind();
     frame.passes.begin(view, frame.settings);
-    base_program_.use();
-    const Scene& scene = frame.gpu.scene();
-    for (int i : scene.reflectorInstances()) {
-      const bool with_image =
-          std::any_of(shown.begin(), shown.end(), [&](const auto& s) { return s.first == i; });
-      // The mirror this view is mirrored in lies on its near plane: never drawn in it.
-      if (!with_image && i != from) frame.gpu.draw(i);
-    }
-    program_.use();
-    for (const auto& [mirror, image] : shown) {
-      image->color().bind(MIRAGE_UNIT_METHOD);
-      frame.gpu.draw(mirror);
-    }
+    // The mirror this view is mirrored in lies on its near plane: never drawn in it.
+    drawMirrorImages(frame.gpu, shown, program_, base_program_, from);
   }
 
   // The image of mirror k at recursion depth `level`, made on first use.
@@ -98,8 +81,8 @@ class PlanarMethod final : public Method {
 
   const MethodInfo& info_;
   gpu::Program program_, base_program_;
-  std::vector<int> planar_;
   int not_planar_ = 0;
+  std::vector<int> planar_;
   long mirrored_views_ = 0;
   std::vector<std::vector<std::unique_ptr<FrameTarget>>> images_;
 };

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "methods/zexel/zexel_camera.h"
+#include "render/mirror_images.h"
 
 namespace mirage {
 
@@ -30,17 +31,10 @@ class ZexelMethod final : public Method {
         mirror_program_(gpu::Program::graphics("render/shaders/scene.vert",
                                                "render/shaders/mirror_image.frag")),
         base_program_(
-            gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")) {
-    const Scene& scene = setup.gpu.scene();
-    for (int i : scene.reflectorInstances()) {
-      if (isPlanarInstance(scene, i, scene.instances[size_t(i)].matrixAt(0.0f)))
-        maps_.push_back(ZexelMap{i, nullptr, View(), vec3(0.0f), nullptr});
-      else
-        ++not_planar_;
-    }
-    GLuint vao = 0;
-    glCreateVertexArrays(1, &vao);
-    empty_vao_ = gpu::Handle<gpu::VertexArrayTraits>(vao);
+            gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")),
+        empty_vao_(gpu::createVertexArray()) {
+    for (int mirror : planarReflectors(setup.gpu.scene(), &not_planar_))
+      maps_.push_back(ZexelMap{mirror, nullptr, View(), vec3(0.0f), nullptr});
   }
 
   const MethodInfo& info() const override { return info_; }
@@ -63,22 +57,13 @@ class ZexelMethod final : public Method {
     frame.passes.drawDirect();
     frame.beginPart(gpu::Part::kReflect);
     zexels_warped_ = 0;
-    std::vector<const ZexelMap*> shown;
+    std::vector<MirrorImage> shown;
     if (frame.settings.order > 0)
       for (ZexelMap& map : maps_)
-        if (warp(frame, map)) shown.push_back(&map);
+        if (warp(frame, map)) shown.push_back({map.mirror, map.warped.get()});
     frame.target.bind();
     frame.passes.begin(frame.view, frame.settings);
-    base_program_.use();
-    for (int i : frame.gpu.scene().reflectorInstances())
-      if (std::none_of(shown.begin(), shown.end(),
-                       [&](const ZexelMap* m) { return m->mirror == i; }))
-        frame.gpu.draw(i);
-    mirror_program_.use();
-    for (const ZexelMap* map : shown) {
-      map->warped->color().bind(MIRAGE_UNIT_METHOD);
-      frame.gpu.draw(map->mirror);
-    }
+    drawMirrorImages(frame.gpu, shown, mirror_program_, base_program_);
   }
 
   int orderRendered(int requested) const override { return std::min(requested, 1); }

@@ -1,0 +1,25 @@
+// Planar mirrors shown through images made for them from the mirrored eye (the scene
+// re-rendered: method `planar`; zexels warped: method `zexel`): the reflector pass both draw.
+#pragma once
+
+#include <span>
+
+#include "gpu/program.h"
+#include "render/frame_target.h"
+#include "render/gpu_scene.h"
+
+namespace mirage {
+
+struct MirrorImage {
+  int mirror = -1;                     // the reflector instance
+  const FrameTarget* image = nullptr;  // its image from the mirrored eye, frame-sized
+};
+
+// Draws every reflector of the scene into the bound target: those in `images` with
+// `mirror_program` (render/shaders/mirror_image.frag: the image at the mirror's own pixels),
+// the others except `skip` with `base_program` (their base colour).
+void drawMirrorImages(const GpuScene& gpu, std::span<const MirrorImage> images,
+                      const gpu::Program& mirror_program, const gpu::Program& base_program,
+                      int skip = -1);
+
+}  // namespace mirage
