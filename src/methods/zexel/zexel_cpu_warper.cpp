@@ -9,32 +9,46 @@
 #include <tbb/parallel_for.h>
 
 #include "methods/zexel/zexel_warp_shared.h"
+#include "shading/shading.h"
 
 namespace mirage {
 
 namespace {
 
 // Where zexel (x, y) lands: (u, v, depth over the output plane distance); depth <= 0 when it
-// saw nothing or lands behind the output camera.
+// was never written or lands behind the output camera. A zexel that saw nothing is a direction
+// (δ = 0) and lands infinitely far.
 vec3 landing(const ZexelMap2D& map, const mat3& po_inverse, const WarpCamera& in,
-             const WarpCamera& out, int x, int y) {
+             const WarpCamera& out, int x, int y, float* delta_out = nullptr) {
   const vec4& t = map.texels[size_t(y) * size_t(map.width) + size_t(x)];
-  if (!(t.w > 0.0f) || t.w >= map.sky) return vec3(0.0f, 0.0f, -1.0f);
+  if (!(t.w > 0.0f)) return vec3(0.0f, 0.0f, -1.0f);
   const vec2 xi(float(x) + 0.5f, float(y) + 0.5f);
-  const float delta = shading::zexel_disparity_from_distance(in.p, xi, t.w);
+  const float delta =
+      t.w >= map.sky ? 0.0f : shading::zexel_disparity_from_distance(in.p, xi, t.w);
+  if (delta_out) *delta_out = delta;
   return shading::zexel_warp(po_inverse, in.p, in.c, out.c, delta, xi);
 }
 
-// The s x s block of pixels whose centres are nearest (u, v), clipped to the image.
+// The splat side of a zexel: fixed, or (0) from the warp's magnification.
+int splatSide(int splat, const mat3& po_inverse, const WarpCamera& in, const WarpCamera& out,
+              float delta, int x, int y, vec2 landed) {
+  if (splat > 0) return splat;
+  return shading::zexel_splat_side(po_inverse, in.p, in.c, out.c, delta,
+                                   vec2(float(x) + 0.5f, float(y) + 0.5f), landed,
+                                   kMaxAutoSplat);
+}
+
+// The s x s block of pixels whose centres are nearest (u, v), clipped to `rect` (within an image
+// `rect_width` pixels wide).
 template <typename Write>
-void splatAt(vec2 uv, int splat, ivec2 size, Write&& write) {
+void splatAt(vec2 uv, int splat, ivec4 rect, int rect_width, Write&& write) {
   const int x0 = int(std::floor(uv.x - 0.5f * float(splat - 1)));
   const int y0 = int(std::floor(uv.y - 0.5f * float(splat - 1)));
   for (int dy = 0; dy < splat; ++dy)
     for (int dx = 0; dx < splat; ++dx) {
       const int px = x0 + dx, py = y0 + dy;
-      if (px >= 0 && py >= 0 && px < size.x && py < size.y)
-        write(size_t(py) * size_t(size.x) + size_t(px));
+      if (px >= rect.x && py >= rect.y && px < rect.z && py < rect.w)
+        write(size_t(py) * size_t(rect_width) + size_t(px));
     }
 }
 
@@ -51,6 +65,8 @@ std::vector<uint32_t> warpOcclusionCompatible(const ZexelMap2D& map, const WarpC
   std::vector<std::atomic<uint32_t>> shown(size_t(size.x) * size_t(size.y));
   for (auto& s : shown) s.store(kNoZexel, std::memory_order_relaxed);
   const mat3 po_inverse = glm::inverse(out.p);
+  const ivec4 clip(glm::max(ivec2(options.rect), ivec2(0)),
+                   glm::min(ivec2(options.rect.z, options.rect.w), size));
   // The epipole: the output centre seen from the reference camera, homogeneous.
   const vec3 e = glm::inverse(in.p) * (out.c - in.c);
   const bool positive = e.z > 0.0f;
@@ -77,10 +93,12 @@ std::vector<uint32_t> warpOcclusionCompatible(const ZexelMap2D& map, const WarpC
   auto run = [&](const Sheet& s) {
     for (int y = s.y_from; y != s.y_to; y += s.y_step)
       for (int x = s.x_from; x != s.x_to; x += s.x_step) {
-        const vec3 o = landing(map, po_inverse, in, out, x, y);
+        float delta = 0.0f;
+        const vec3 o = landing(map, po_inverse, in, out, x, y, &delta);
         if (!(o.z > 0.0f)) continue;
         const uint32_t index = uint32_t(y) * uint32_t(map.width) + uint32_t(x);
-        splatAt(vec2(o), options.splat, size,
+        const int side = splatSide(options.splat, po_inverse, in, out, delta, x, y, vec2(o));
+        splatAt(vec2(o), side, clip, size.x,
                 [&](size_t pixel) { shown[pixel].store(index, std::memory_order_relaxed); });
       }
   };
@@ -100,10 +118,12 @@ std::vector<uint32_t> warpZBuffered(const ZexelMap2D& map, const WarpCamera& in,
   const mat3 po_inverse = glm::inverse(out.p);
   for (int y = 0; y < map.height; ++y)
     for (int x = 0; x < map.width; ++x) {
-      const vec3 o = landing(map, po_inverse, in, out, x, y);
+      float delta = 0.0f;
+      const vec3 o = landing(map, po_inverse, in, out, x, y, &delta);
       if (!(o.z > 0.0f)) continue;
       const uint32_t index = uint32_t(y) * uint32_t(map.width) + uint32_t(x);
-      splatAt(vec2(o), splat, size, [&](size_t pixel) {
+      const int side = splatSide(splat, po_inverse, in, out, delta, x, y, vec2(o));
+      splatAt(vec2(o), side, ivec4(0, 0, size), size.x, [&](size_t pixel) {
         if (o.z < depth[pixel]) {
           depth[pixel] = o.z;
           shown[pixel] = index;
@@ -111,6 +131,16 @@ std::vector<uint32_t> warpZBuffered(const ZexelMap2D& map, const WarpCamera& in,
       });
     }
   return shown;
+}
+
+float zexelDistance(const ZexelMap2D& map, const WarpCamera& in, uint32_t index,
+                    const vec3& from) {
+  const vec4& t = map.texels[index];
+  if (t.w >= map.sky) return shading::MISS_DISTANCE;
+  const vec2 xi(float(index % uint32_t(map.width)) + 0.5f,
+                float(index / uint32_t(map.width)) + 0.5f);
+  const vec3 ray = in.p * vec3(xi, 1.0f);
+  return glm::length(in.c + glm::normalize(ray) * t.w - from);
 }
 
 }  // namespace mirage

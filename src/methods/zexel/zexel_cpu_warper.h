@@ -15,9 +15,11 @@
 namespace mirage {
 
 inline constexpr uint32_t kNoZexel = 0xffffffffu;
+inline constexpr int kMaxAutoSplat = 8;  // as MIRAGE_ZEXEL_MAX_SPLAT
 
-// A depth-preserving reflection map: per zexel rgb and the distance along its ray (a value of
-// zero or at least `sky` marks a zexel that saw nothing), rows from the bottom.
+// A depth-preserving reflection map: per zexel rgb and the distance along its ray (zero: never
+// written; at least `sky`: saw nothing, a direction that lands infinitely far), rows from the
+// bottom.
 struct ZexelMap2D {
   int width = 0, height = 0;
   std::vector<vec4> texels;
@@ -31,8 +33,10 @@ struct WarpCamera {
 };
 
 struct WarpOptions {
-  int splat = 1;         // s x s pixels per zexel, centred on where it lands
+  int splat = 1;         // s x s pixels per zexel, centred on where it lands; 0: from the warp's
+                         // magnification (zexel_splat_side), at most kMaxAutoSplat
   bool parallel = true;  // the sheets on parallel threads
+  ivec4 rect{0, 0, 1 << 30, 1 << 30};  // only pixels in [xy, zw) are written (a mirror's)
 };
 
 // Per output pixel (rows from the bottom) the index of the zexel shown there, or kNoZexel.
@@ -42,5 +46,8 @@ std::vector<uint32_t> warpOcclusionCompatible(const ZexelMap2D& map, const WarpC
 // The same with a z-buffer: the zexel nearest the output camera wins (any traversal order).
 std::vector<uint32_t> warpZBuffered(const ZexelMap2D& map, const WarpCamera& in,
                                     const WarpCamera& out, ivec2 size, int splat);
+
+// The distance from `from` to what zexel `index` saw (MISS_DISTANCE for the sky).
+float zexelDistance(const ZexelMap2D& map, const WarpCamera& in, uint32_t index, const vec3& from);
 
 }  // namespace mirage

@@ -3,38 +3,66 @@
 #include <algorithm>
 #include <memory>
 
-#include "methods/zexel/zexel_camera.h"
-#include "render/mirror_images.h"
+#include "core/error.h"
+#include "methods/zexel/zexel_maps.h"
+#include "methods/zexel/zexel_shared.h"
+#include "methods/zexel/zexel_warp_pass.h"
 
 namespace mirage {
 
 namespace {
 
-// One mirror's depth-preserving reflection map.
-struct ZexelMap {
-  int mirror = -1;
-  std::unique_ptr<FrameTarget> zexels;  // rgb; alpha: distance along the ray (the frame's)
-  View reference;
-  vec3 normal{0.0f};                    // the side it was captured for
-  std::unique_ptr<FrameTarget> warped;  // this frame's image from the mirrored eye
+ZexelMapOptions mapOptions(const ParamValues& params) {
+  ZexelMapOptions o;
+  o.size = params.integer("zexel-size");
+  o.count = params.integer("zexel-maps");
+  o.cone = float(params.real("zexel-cone"));
+  o.fov = float(params.real("zexel-fov"));
+  o.hierarchy = params.text("zexel-lod") == "on";
+  o.cpu_copies = params.text("zexel-warper") == "cpu";
+  return o;
+}
+
+// The driver's limits on the maps, checked before anything is allocated.
+void checkDriverLimits(const ZexelMapOptions& o) {
+  GLint largest = 0, layers = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &largest);
+  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &layers);
+  if (o.size > largest)
+    throwInput("zexel: --zexel-size {}: beyond this driver's largest texture (allowed 16..{})",
+               o.size, largest);
+  if (o.count > layers)
+    throwInput("zexel: --zexel-maps {}: beyond this driver's array layers (allowed 1..{})",
+               o.count, layers);
+}
+
+// A planar mirror: its maps and this frame's warp of them.
+struct ZexelMirror {
+  ZexelMirrorMaps maps;
+  ZexelWarpTarget target;
 };
 
 class ZexelMethod final : public Method {
  public:
   explicit ZexelMethod(const MethodSetup& setup)
       : info_(setup.info),
-        size_(setup.params.integer("zexel-size")),
+        options_(mapOptions(setup.params)),
+        per_frame_(std::min(setup.params.integer("zexel-maps-per-frame"), options_.count)),
         splat_(setup.params.integer("zexel-splat")),
-        fov_(float(setup.params.real("zexel-fov"))),
-        warp_program_(gpu::Program::graphics("methods/zexel/zexel_warp.vert",
-                                             "methods/zexel/zexel_warp.frag")),
+        threads_(setup.params.integer("zexel-threads")),
+        keep_(setup.params.text("zexel-clear") == "off"),
+        fill_(setup.params.integer("zexel-fill")),
+        cpu_(options_.cpu_copies),
+        warp_program_(gpu::Program::compute("methods/zexel/zexel_warp.comp")),
+        pyramid_program_(gpu::Program::compute("methods/zexel/zexel_pyramid.comp")),
         mirror_program_(gpu::Program::graphics("render/shaders/scene.vert",
-                                               "render/shaders/mirror_image.frag")),
+                                               "methods/zexel/zexel_mirror.frag")),
         base_program_(
             gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")),
-        empty_vao_(gpu::createVertexArray()) {
+        counters_(2 * sizeof(uint32_t)) {
+    checkDriverLimits(options_);
     for (int mirror : planarReflectors(setup.gpu.scene(), &not_planar_))
-      maps_.push_back(ZexelMap{mirror, nullptr, View(), vec3(0.0f), nullptr});
+      mirrors_.push_back(std::make_unique<ZexelMirror>(ZexelMirror{{mirror, options_}, {}}));
   }
 
   const MethodInfo& info() const override { return info_; }
@@ -43,11 +71,13 @@ class ZexelMethod final : public Method {
   // mirror's other side.
   void update(FrameContext& frame) override {
     const bool changed = captured_version_ != frame.gpu.version() || !captured_;
-    for (ZexelMap& map : maps_) {
+    for (auto& m : mirrors_) {
       vec3 point, normal;
-      if (!plane(frame, map.mirror, frame.view.eye(), point, normal)) continue;
-      if (!changed && map.zexels && glm::dot(normal, map.normal) > 0.0f) continue;
-      capture(frame, map, point, normal);
+      if (!plane(frame, m->maps.mirror(), frame.view.eye(), point, normal)) continue;
+      if (!changed && m->maps.captured() && glm::dot(normal, m->maps.normal()) > 0.0f) continue;
+      if (!scratch_) scratch_ = std::make_unique<FrameTarget>(ivec2(options_.size));
+      m->maps.capture(frame, point, normal, *scratch_, base_program_, pyramid_program_);
+      captures_ += m->maps.count();
     }
     captured_ = true;
     captured_version_ = frame.gpu.version();
@@ -57,21 +87,31 @@ class ZexelMethod final : public Method {
     frame.passes.drawDirect();
     frame.beginPart(gpu::Part::kReflect);
     zexels_warped_ = 0;
-    std::vector<MirrorImage> shown;
-    if (frame.settings.order > 0)
-      for (ZexelMap& map : maps_)
-        if (warp(frame, map)) shown.push_back({map.mirror, map.warped.get()});
-    frame.target.bind();
-    frame.passes.begin(frame.view, frame.settings);
-    drawMirrorImages(frame.gpu, shown, mirror_program_, base_program_);
+    const GLuint zero = 0;
+    glClearNamedBufferData(counters_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    counters_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_ZEXEL_COUNTERS);
+    std::vector<int> shown;
+    for (auto& m : mirrors_)
+      if (frame.settings.order > 0 && warp(frame, *m)) {
+        draw(frame, *m);
+        shown.push_back(m->maps.mirror());
+      }
+    base_program_.use();
+    for (int i : frame.gpu.scene().reflectorInstances())
+      if (std::find(shown.begin(), shown.end(), i) == shown.end()) frame.gpu.draw(i);
   }
 
   int orderRendered(int requested) const override { return std::min(requested, 1); }
 
   std::map<std::string, double> stats() const override {
-    return {{"zexel_maps", double(maps_.size())},
+    uint32_t counts[2] = {0, 0};
+    counters_.download(counts, sizeof(counts));
+    return {{"zexel_maps", double(options_.count) * double(mirrors_.size())},
             {"zexel_captures", double(captures_)},
             {"zexels_warped", double(zexels_warped_)},
+            {"zexel_level", double(level_)},
+            {"mirror_pixels", double(counts[0])},
+            {"exposed_fraction", counts[0] > 0 ? double(counts[1]) / double(counts[0]) : 0.0},
             {"reflectors_not_planar", double(not_planar_)}};
   }
 
@@ -81,63 +121,77 @@ class ZexelMethod final : public Method {
                                frame.gpu.instanceMatrices()[size_t(mirror)], eye, point, normal);
   }
 
-  // The map of one mirror: the scene in front of it from the reference camera behind it, the
-  // other reflectors in their base colour (one bounce).
-  void capture(FrameContext& frame, ZexelMap& map, const vec3& point, const vec3& normal) {
-    const Bounds3 b = frame.gpu.instanceBounds(map.mirror);
-    const float half_diagonal = std::max(0.5f * glm::length(b.extent()), 1e-4f);
-    map.reference = zexelReferenceView(point, normal, half_diagonal, size_, fov_);
-    map.normal = normal;
-    if (!map.zexels || map.zexels->size() != ivec2(size_))
-      map.zexels = std::make_unique<FrameTarget>(ivec2(size_));
-    map.zexels->bind();
-    map.zexels->clear();
-    frame.passes.begin(map.reference, frame.settings);
-    frame.passes.drawDirect();
-    frame.passes.drawReflectors(base_program_, map.mirror);
-    ++captures_;
+  // The pixels (window coordinates, [xy, zw)) the mirror's bounds cover on screen, the whole
+  // frame when they reach behind the eye.
+  static ivec4 screenRect(FrameContext& frame, int mirror) {
+    const ivec2 size = frame.view.size();
+    const Bounds3 b = frame.gpu.instanceBounds(mirror);
+    vec2 lo(float(size.x), float(size.y)), hi(0.0f);
+    for (int corner = 0; corner < 8; ++corner) {
+      const vec3 x((corner & 1) ? b.hi.x : b.lo.x, (corner & 2) ? b.hi.y : b.lo.y,
+                   (corner & 4) ? b.hi.z : b.lo.z);
+      const vec3 p = frame.view.project(x);  // top-left origin; z: eye depth
+      if (!(p.z > 0.0f)) return ivec4(0, 0, size);
+      const vec2 window(p.x, float(size.y) - p.y);
+      lo = glm::min(lo, window);
+      hi = glm::max(hi, window);
+    }
+    const ivec2 first = glm::clamp(ivec2(glm::floor(lo)) - 1, ivec2(0), size);
+    const ivec2 last = glm::clamp(ivec2(glm::ceil(hi)) + 1, ivec2(0), size);
+    return ivec4(first, last);
   }
 
-  // Warps a mirror's zexels into the image seen from the eye mirrored in it; false when the
-  // mirror is edge-on or the eye is on the other side than the map's.
-  bool warp(FrameContext& frame, ZexelMap& map) {
+  // Warps the maps nearest the eye mirrored in `m` into its target; false when the mirror is
+  // edge-on or the eye is on the other side than the maps'.
+  bool warp(FrameContext& frame, ZexelMirror& m) {
     vec3 point, normal;
-    if (!map.zexels || !plane(frame, map.mirror, frame.view.eye(), point, normal) ||
-        glm::dot(normal, map.normal) <= 0.0f)
+    if (!m.maps.captured() || !plane(frame, m.maps.mirror(), frame.view.eye(), point, normal) ||
+        glm::dot(normal, m.maps.normal()) <= 0.0f)
       return false;
     const View mirrored = frame.view.mirrored(point, normal);
-    const ivec2 size = frame.view.size();
-    if (!map.warped || map.warped->size() != size) map.warped = std::make_unique<FrameTarget>(size);
-    map.warped->bind();
-    map.warped->clear();
-    frame.passes.begin(mirrored, frame.settings);
-    frame.passes.drawBackground();
-    const View& ref = map.reference;
-    warp_program_.set("u_pi", mat4(zexelPixelMatrix(ref, ref.nearPlane())));
-    warp_program_.set("u_po_inverse",
-                      mat4(glm::inverse(zexelPixelMatrix(mirrored, mirrored.nearPlane()))));
-    warp_program_.set("u_ci", ref.eye());
-    warp_program_.set("u_co", mirrored.eye());
-    warp_program_.set("u_near_far_o", vec2(mirrored.nearPlane(), mirrored.farPlane()));
-    warp_program_.set("u_width", size_);
-    warp_program_.set("u_splat", float(splat_));
-    map.zexels->color().bind(MIRAGE_UNIT_METHOD);
-    warp_program_.use();
-    glEnable(GL_PROGRAM_POINT_SIZE);
-    glBindVertexArray(empty_vao_.id());
-    glDrawArrays(GL_POINTS, 0, size_ * size_);
-    glDisable(GL_PROGRAM_POINT_SIZE);
-    zexels_warped_ += long(size_) * size_;
+    ZexelWarpJob job{&m.maps, m.maps.select(mirrored.eye(), per_frame_), 0, splat_,
+                     screenRect(frame, m.maps.mirror())};
+    job.level = level_ = m.maps.levelFor(job.chosen.front(), mirrored);
+    m.target.resize(frame.view.size(), keep_);
+    if (cpu_) {
+      zexels_warped_ += warpOnCpu(job, mirrored, threads_, m.target);
+    } else {
+      warpOnGpu(warp_program_, job, mirrored, m.target);
+      const long width = std::max(options_.size >> job.level, 1);
+      zexels_warped_ += width * width * long(job.chosen.size());
+    }
+    job_ = job;
     return true;
   }
 
+  // The mirror with the zexels its warp left at its pixels.
+  void draw(FrameContext& frame, const ZexelMirror& m) {
+    m.target.bind();
+    m.maps.texture().bind(MIRAGE_UNIT_ZEXEL_MAPS);
+    const int second = job_.chosen.size() > 1 ? job_.chosen[1] : job_.chosen[0];
+    glProgramUniform2i(mirror_program_.id(), mirror_program_.location("u_layers"),
+                       job_.chosen[0], second);
+    mirror_program_.set("u_level", job_.level);
+    mirror_program_.set("u_width", std::max(options_.size >> job_.level, 1));
+    mirror_program_.set("u_keep", keep_ ? 1 : 0);
+    mirror_program_.set("u_fill", fill_);
+    mirror_program_.use();
+    frame.gpu.draw(m.maps.mirror());
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  }
+
   const MethodInfo& info_;
-  int size_, splat_;
-  float fov_;
-  gpu::Program warp_program_, mirror_program_, base_program_;
-  gpu::Handle<gpu::VertexArrayTraits> empty_vao_;
-  std::vector<ZexelMap> maps_;
-  int not_planar_ = 0;
+  ZexelMapOptions options_;
+  int per_frame_, splat_, threads_;
+  bool keep_;
+  int fill_;
+  bool cpu_;
+  gpu::Program warp_program_, pyramid_program_, mirror_program_, base_program_;
+  gpu::Buffer counters_;
+  std::vector<std::unique_ptr<ZexelMirror>> mirrors_;
+  std::unique_ptr<FrameTarget> scratch_;
+  ZexelWarpJob job_;
+  int not_planar_ = 0, level_ = 0;
   bool captured_ = false;
   uint64_t captured_version_ = 0;
   long captures_ = 0, zexels_warped_ = 0;
@@ -149,18 +203,41 @@ MethodEntry zexelMethodEntry() {
   MethodEntry entry;
   entry.info.name = "zexel";
   entry.info.description =
-      "depth-preserving reflection maps: per planar mirror a map of colour and distance from a "
-      "reference camera behind it, forward-warped (McMillan) to the mirrored eye each frame and "
-      "splatted (forward-mapped planar mirror paper); non-planar reflectors show base colour";
+      "depth-preserving reflection maps: per planar mirror maps of colour and distance from "
+      "reference cameras on the hemisphere behind it, the nearest forward-warped (McMillan) to "
+      "the mirrored eye each frame and splatted, on the GPU or the CPU (forward-mapped planar "
+      "mirror paper); non-planar reflectors show base colour";
   entry.info.max_order = 1;
   entry.info.params = {
-      ParamSpec::integer("zexel-size", 16, 4096, 512,
-                         "side of each mirror's depth-preserving reflection map, in zexels"),
-      ParamSpec::integer("zexel-splat", 1, 9, 3,
-                         "side of the square splat of a warped zexel, in pixels (the paper: 3)"),
+      ParamSpec::integer("zexel-size", 16, 65536, 512,
+                         "side of each depth-preserving reflection map, in zexels (at most the "
+                         "driver's largest texture)"),
+      ParamSpec::integer("zexel-maps", 1, 64, 1,
+                         "reference maps per mirror on the hemisphere behind it (the paper: 1 "
+                         "in the mirror room, up to 64 in the hall)"),
+      ParamSpec::integer("zexel-maps-per-frame", 1, 2, 2,
+                         "maps warped per mirror and frame, the nearest the mirrored eye"),
+      ParamSpec::real("zexel-cone", 0.0, 85.0, 60.0,
+                      "spread of the reference cameras from the mirror's axis, in degrees"),
       ParamSpec::real("zexel-fov", 10.0, 170.0, 100.0,
-                      "vertical field of view of the reference camera behind each mirror, in "
-                      "degrees")};
+                      "vertical field of view of each reference camera, in degrees"),
+      ParamSpec::integer("zexel-splat", 0, 9, 3,
+                         "side of the square splat of a warped zexel, in pixels (the paper: 3; "
+                         "0: from the warp's local magnification, up to 8)"),
+      ParamSpec::choice("zexel-clear", {"on", "off"}, "on",
+                        "clear the mirror's image each frame; off: exposures keep the last "
+                        "frame's colour (the paper's don't-clear option)"),
+      ParamSpec::integer("zexel-fill", 0, 64, 16,
+                         "exposed mirror pixels show the farthest zexel met within this many "
+                         "pixels in eight directions (0: no fill, the paper)"),
+      ParamSpec::choice("zexel-warper", {"gpu", "cpu"}, "gpu",
+                        "gpu: a compute shader with an exact depth test; cpu: McMillan's "
+                        "occlusion-compatible order on parallel threads, no z-buffer"),
+      ParamSpec::integer("zexel-threads", 0, 256, 0,
+                         "threads of the CPU warper (0: all cores)"),
+      ParamSpec::choice("zexel-lod", {"on", "off"}, "off",
+                        "a mip-map-like hierarchy of the maps, the level chosen so that zexels "
+                        "land about a pixel apart (the paper's future work)")};
   entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
     return std::make_unique<ZexelMethod>(setup);
   };

@@ -14,11 +14,31 @@
 
 SHARED_BEGIN
 
+// The depth over the plane distance of a zexel that saw nothing (δ = 0: a direction, warped by
+// P_o⁻¹ P_i alone, infinitely far in every image).
+SHARED_CONST float ZEXEL_AT_INFINITY = 3.0e38f;
+
 // (u_o, v_o, w): the pixel the zexel lands on and w = Z_o / n_o, its depth in the output image
-// over that image's plane distance (w <= 0: behind the output camera, not drawn).
+// over that image's plane distance (w <= 0: behind the output camera, not drawn; δ = 0: w is
+// ZEXEL_AT_INFINITY when the direction is in front of the output camera).
 SHARED_FN vec3 zexel_warp(mat3 po_inverse, mat3 pi, vec3 ci, vec3 co, float delta, vec2 xi) {
   vec3 xo = delta * (po_inverse * (ci - co)) + po_inverse * (pi * vec3(xi, 1.0f));
-  return vec3(xo.x / xo.z, xo.y / xo.z, xo.z / delta);
+  float w = delta > 0.0f ? xo.z / delta : (xo.z > 0.0f ? ZEXEL_AT_INFINITY : -1.0f);
+  return vec3(xo.x / xo.z, xo.y / xo.z, w);
+}
+
+// The side of the square splat that closes the gaps between a zexel and its neighbours in the
+// output: the warp's local magnification, the landing points of x_i + (1, 0) and x_i + (0, 1)
+// at the same disparity (a surface facing the reference camera), rounded up, within [1, largest].
+SHARED_FN int zexel_splat_side(mat3 po_inverse, mat3 pi, vec3 ci, vec3 co, float delta, vec2 xi,
+                               vec2 landed, int largest) {
+  vec3 right = zexel_warp(po_inverse, pi, ci, co, delta, xi + vec2(1.0f, 0.0f));
+  vec3 up = zexel_warp(po_inverse, pi, ci, co, delta, xi + vec2(0.0f, 1.0f));
+  float spread = max(max(abs(right.x - landed.x), abs(right.y - landed.y)),
+                     max(abs(up.x - landed.x), abs(up.y - landed.y)));
+  // Non-finite (a neighbour behind the camera) or huge: the largest splat.
+  if (!(spread < float(largest))) return largest;
+  return clamp(int(ceil(spread)), 1, largest);
 }
 
 // Eq. 4: the disparity from the classic [0, 1] GL depth of a perspective camera.

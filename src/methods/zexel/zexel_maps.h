@@ -1,0 +1,70 @@
+// A planar mirror's depth-preserving reflection maps (the forward-mapped planar mirror paper, §3
+// and §4.1): reference cameras on the hemisphere behind the mirror, each capturing the colour and
+// the distance along the ray of the scene in front of it (zexels), in one texture array with a
+// mip-map-like hierarchy (the paper's future work: coarser levels for mirrors seen from afar,
+// each texel the nearest of its four children with the colours of those at its depth averaged).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "gpu/program.h"
+#include "gpu/texture.h"
+#include "methods/method.h"
+#include "methods/zexel/zexel_cpu_warper.h"
+#include "render/frame_target.h"
+
+namespace mirage {
+
+struct ZexelMapOptions {
+  int size = 512;         // zexels per side
+  int count = 1;          // maps on the hemisphere
+  float cone = 60.0f;     // their spread from the pole, degrees
+  float fov = 100.0f;     // each reference camera's vertical field of view, degrees
+  bool hierarchy = false;  // build the coarser levels
+  bool cpu_copies = false;  // keep every map and level on the CPU too (the CPU warper)
+};
+
+class ZexelMirrorMaps {
+ public:
+  ZexelMirrorMaps(int mirror, const ZexelMapOptions& options);
+
+  int mirror() const { return mirror_; }
+  bool captured() const { return !views_.empty(); }
+  const vec3& normal() const { return normal_; }  // the side captured
+  int count() const { return int(views_.size()); }
+  int levels() const { return maps_.levels(); }
+  const View& view(int map) const { return views_[size_t(map)]; }
+  const gpu::Texture& texture() const { return maps_; }
+  // A map's level on the CPU (cpu_copies), rows from the bottom.
+  const ZexelMap2D& cpuMap(int map, int level) const {
+    return cpu_[size_t(map) * size_t(levels()) + size_t(level)];
+  }
+  // A map's level as the warp sees it: its pixel matrix at that level and its centre.
+  WarpCamera warpCamera(int map, int level) const;
+
+  // Captures every map for the mirror plane (`point`, unit `normal` towards the eye's side) into
+  // `scratch` (size², reused) then the array; `base` shades the other reflectors.
+  void capture(FrameContext& frame, const vec3& point, const vec3& normal, FrameTarget& scratch,
+               const gpu::Program& base, const gpu::Program& pyramid);
+
+  // The maps a frame seen from `mirrored_eye` warps: the `count` nearest.
+  std::vector<int> select(const vec3& mirrored_eye, int count) const;
+
+  // The level whose zexels land about a pixel apart in `output`, seen through map `map`.
+  int levelFor(int map, const View& output) const;
+
+ private:
+  void readBack();
+
+  int mirror_;
+  ZexelMapOptions options_;
+  vec3 point_{0.0f}, normal_{0.0f};
+  float half_diagonal_ = 1.0f;
+  std::vector<vec3> directions_;  // world space, towards the mirror from each camera
+  std::vector<View> views_;
+  gpu::Texture maps_;
+  std::vector<ZexelMap2D> cpu_;  // map-major, then level
+};
+
+}  // namespace mirage
