@@ -85,6 +85,53 @@ TEST(ZexelCamera, ReferenceLooksThroughTheMirrorFromBehind) {
   EXPECT_GT(front.z / front.w, -1.0f);
 }
 
+// The hemisphere: unit directions behind the mirror within the cone, about equal areas each (the
+// Fibonacci cap); one map at the pole.
+TEST(ZexelCamera, HemisphereCoversTheConeEvenly) {
+  EXPECT_EQ(zexelHemisphere(1, 60.0f), std::vector<vec3>{vec3(0.0f, 0.0f, 1.0f)});
+  const std::vector<vec3> w = zexelHemisphere(64, 60.0f);
+  ASSERT_EQ(w.size(), 64u);
+  float nearest_worst = 0.0f, nearest_best = 10.0f;
+  for (size_t i = 0; i < w.size(); ++i) {
+    EXPECT_NEAR(glm::length(w[i]), 1.0f, 1e-5f);
+    EXPECT_GE(w[i].z, std::cos(glm::radians(60.0f)) - 1e-5f);
+    float nearest = 10.0f;
+    for (size_t j = 0; j < w.size(); ++j)
+      if (j != i) nearest = std::min(nearest, std::acos(std::min(glm::dot(w[i], w[j]), 1.0f)));
+    nearest_worst = std::max(nearest_worst, nearest);
+    nearest_best = std::min(nearest_best, nearest);
+  }
+  // Evenly spread: the gaps to the nearest neighbour differ by less than 2x.
+  EXPECT_LT(nearest_worst, 2.0f * nearest_best);
+}
+
+// The maps a frame warps are those whose cameras look at the mirror most nearly along the
+// mirrored eye's line of sight (checked against every pair by brute force).
+TEST(ZexelCamera, SelectionPicksTheNearestViews) {
+  const vec3 mirror(0.5f, 1.0f, -3.0f), normal(0.0f, 0.0f, 1.0f);
+  const mat3 axes = zexelMirrorFrame(normal);
+  EXPECT_NEAR(glm::length(axes[2] - normal), 0.0f, 1e-6f);
+  std::vector<vec3> directions;
+  for (const vec3& w : zexelHemisphere(16, 60.0f)) directions.push_back(axes * w);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  for (int trial = 0; trial < 200; ++trial) {
+    // A mirrored eye behind the mirror.
+    const vec3 eye = mirror + vec3(3.0f * u(rng), 2.0f * u(rng), -0.2f - 4.0f * (u(rng) + 1.0f));
+    const std::vector<int> chosen = nearestZexelMaps(directions, mirror, eye, 2);
+    ASSERT_EQ(chosen.size(), 2u);
+    const vec3 seen = glm::normalize(mirror - eye);
+    for (size_t k = 0; k < directions.size(); ++k) {
+      if (int(k) == chosen[0] || int(k) == chosen[1]) continue;
+      EXPECT_GE(glm::dot(directions[size_t(chosen[1])], seen), glm::dot(directions[k], seen));
+    }
+    EXPECT_GE(glm::dot(directions[size_t(chosen[0])], seen),
+              glm::dot(directions[size_t(chosen[1])], seen));
+    // The camera of a chosen map stands behind the mirror.
+    EXPECT_GT(glm::dot(directions[size_t(chosen[0])], normal), 0.0f);
+  }
+}
+
 // A map ray-cast on the CPU: three spheres at different depths in front of the mirror and a
 // wall behind them, seen from the reference camera.
 ZexelMap2D analyticMap(const View& reference, int size) {
