@@ -69,14 +69,14 @@ TEST_F(ZexelFrames, GpuAndCpuWarpersAgree) {
     const ZexelFrame c = renderZexel(scene_, params("cpu"), {view()});
     EXPECT_EQ(g.stats.at("zexels_warped"), c.stats.at("zexels_warped"));
     EXPECT_NEAR(g.stats.at("exposed_fraction"), c.stats.at("exposed_fraction"), 0.002) << splat;
-    const double gpu_psnr = reflectorPsnr(renderWithTruth(scene_, "zexel", size_, settings,
-                                                          params("gpu")));
-    const double cpu_psnr = reflectorPsnr(renderWithTruth(scene_, "zexel", size_, settings,
-                                                          params("cpu")));
-    std::printf("splat %s: reflector PSNR GPU warper %.2f dB, CPU warper %.2f dB; exposed %.4f "
-                "vs %.4f\n",
-                splat, gpu_psnr, cpu_psnr, g.stats.at("exposed_fraction"),
-                c.stats.at("exposed_fraction"));
+    const double gpu_psnr =
+        reflectorPsnr(renderWithTruth(scene_, "zexel", size_, settings, params("gpu")));
+    const double cpu_psnr =
+        reflectorPsnr(renderWithTruth(scene_, "zexel", size_, settings, params("cpu")));
+    std::printf(
+        "splat %s: reflector PSNR GPU warper %.2f dB, CPU warper %.2f dB; exposed %.4f "
+        "vs %.4f\n",
+        splat, gpu_psnr, cpu_psnr, g.stats.at("exposed_fraction"), c.stats.at("exposed_fraction"));
     EXPECT_NEAR(gpu_psnr, cpu_psnr, 1.0) << splat;
   }
 }
@@ -130,7 +130,8 @@ TEST_F(ZexelFrames, HierarchyWarpsFewerZexelsAtLittleCost) {
   const ivec2 size{640, 480};
   RenderPair full = renderWithTruth(scene_, "zexel", size, settings, {{"zexel-lod", "off"}});
   RenderPair lod = renderWithTruth(scene_, "zexel", size, settings, {{"zexel-lod", "on"}});
-  const ZexelFrame stats = renderZexel(scene_, {{"zexel-lod", "on"}}, {View(scene_.camera(), size)});
+  const ZexelFrame stats =
+      renderZexel(scene_, {{"zexel-lod", "on"}}, {View(scene_.camera(), size)});
   std::printf("reflector PSNR: full maps %.2f dB, hierarchy %.2f dB (level %.0f, %.0f zexels)\n",
               reflectorPsnr(full), reflectorPsnr(lod), stats.stats.at("zexel_level"),
               stats.stats.at("zexels_warped"));

@@ -3,8 +3,9 @@
 // pixel is never behind an earlier one and no z-buffer is needed. The reference image is cut at
 // the epipole (the output camera's centre projected into it) into up to four sheets, each
 // traversed toward the epipole when it is positive (in front of the reference camera) and away
-// from it when negative; the sheets run on parallel threads (TBB). A z-buffered warper is the
-// reference the tests compare it with.
+// from it when negative; the sheets, split further into wedges about the epipole (zexels on
+// different epipolar lines never land on one another), run on parallel threads (TBB). A z-buffered
+// warper is the reference the tests compare it with.
 #pragma once
 
 #include <cstdint>
@@ -37,6 +38,7 @@ struct WarpOptions {
                          // magnification (zexel_splat_side), at most kMaxAutoSplat
   bool parallel = true;  // the sheets on parallel threads
   ivec4 rect{0, 0, 1 << 30, 1 << 30};  // only pixels in [xy, zw) are written (a mirror's)
+  int wedges = 8;  // each sheet split into this many wedges about the epipole (parallel tasks)
 };
 
 // Per output pixel (rows from the bottom) the index of the zexel shown there, or kNoZexel.

@@ -54,8 +54,8 @@ void ZexelMirrorMaps::capture(FrameContext& frame, const vec3& point, const vec3
   pyramid.use();
   for (int level = 1; level < levels; ++level) {
     const int width = std::max(options_.size >> level, 1);
-    glBindImageTexture(MIRAGE_IMAGE_ZEXEL_LEVEL_IN, maps_.id(), level - 1, GL_TRUE, 0,
-                       GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(MIRAGE_IMAGE_ZEXEL_LEVEL_IN, maps_.id(), level - 1, GL_TRUE, 0, GL_READ_ONLY,
+                       GL_RGBA32F);
     glBindImageTexture(MIRAGE_IMAGE_ZEXEL_LEVEL_OUT, maps_.id(), level, GL_TRUE, 0, GL_WRITE_ONLY,
                        GL_RGBA32F);
     pyramid.set("u_width", width);

@@ -17,11 +17,11 @@
 namespace mirage {
 
 struct ZexelMapOptions {
-  int size = 512;         // zexels per side
-  int count = 1;          // maps on the hemisphere
-  float cone = 60.0f;     // their spread from the pole, degrees
-  float fov = 100.0f;     // each reference camera's vertical field of view, degrees
-  bool hierarchy = false;  // build the coarser levels
+  int size = 512;           // zexels per side
+  int count = 1;            // maps on the hemisphere
+  float cone = 60.0f;       // their spread from the pole, degrees
+  float fov = 100.0f;       // each reference camera's vertical field of view, degrees
+  bool hierarchy = false;   // build the coarser levels
   bool cpu_copies = false;  // keep every map and level on the CPU too (the CPU warper)
 };
 

@@ -32,8 +32,8 @@ void checkDriverLimits(const ZexelMapOptions& o) {
     throwInput("zexel: --zexel-size {}: beyond this driver's largest texture (allowed 16..{})",
                o.size, largest);
   if (o.count > layers)
-    throwInput("zexel: --zexel-maps {}: beyond this driver's array layers (allowed 1..{})",
-               o.count, layers);
+    throwInput("zexel: --zexel-maps {}: beyond this driver's array layers (allowed 1..{})", o.count,
+               layers);
 }
 
 // A planar mirror: its maps and this frame's warp of them.
@@ -55,8 +55,8 @@ class ZexelMethod final : public Method {
         cpu_(options_.cpu_copies),
         warp_program_(gpu::Program::compute("methods/zexel/zexel_warp.comp")),
         pyramid_program_(gpu::Program::compute("methods/zexel/zexel_pyramid.comp")),
-        mirror_program_(gpu::Program::graphics("render/shaders/scene.vert",
-                                               "methods/zexel/zexel_mirror.frag")),
+        mirror_program_(
+            gpu::Program::graphics("render/shaders/scene.vert", "methods/zexel/zexel_mirror.frag")),
         base_program_(
             gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")),
         counters_(2 * sizeof(uint32_t)) {
@@ -169,8 +169,8 @@ class ZexelMethod final : public Method {
     m.target.bind();
     m.maps.texture().bind(MIRAGE_UNIT_ZEXEL_MAPS);
     const int second = job_.chosen.size() > 1 ? job_.chosen[1] : job_.chosen[0];
-    glProgramUniform2i(mirror_program_.id(), mirror_program_.location("u_layers"),
-                       job_.chosen[0], second);
+    glProgramUniform2i(mirror_program_.id(), mirror_program_.location("u_layers"), job_.chosen[0],
+                       second);
     mirror_program_.set("u_level", job_.level);
     mirror_program_.set("u_width", std::max(options_.size >> job_.level, 1));
     mirror_program_.set("u_keep", keep_ ? 1 : 0);
@@ -233,8 +233,7 @@ MethodEntry zexelMethodEntry() {
       ParamSpec::choice("zexel-warper", {"gpu", "cpu"}, "gpu",
                         "gpu: a compute shader with an exact depth test; cpu: McMillan's "
                         "occlusion-compatible order on parallel threads, no z-buffer"),
-      ParamSpec::integer("zexel-threads", 0, 256, 0,
-                         "threads of the CPU warper (0: all cores)"),
+      ParamSpec::integer("zexel-threads", 0, 256, 0, "threads of the CPU warper (0: all cores)"),
       ParamSpec::choice("zexel-lod", {"on", "off"}, "off",
                         "a mip-map-like hierarchy of the maps, the level chosen so that zexels "
                         "land about a pixel apart (the paper's future work)")};

@@ -6,17 +6,17 @@
 
 #include "shading/glsl_compat.h"
 
-#define MIRAGE_BIND_ZEXEL_KEYS 4      // uint per pixel: the nearest landed distance's bits
-#define MIRAGE_BIND_ZEXEL_INDICES 5   // uint per pixel: the zexel shown (slot bit 31, index)
-#define MIRAGE_BIND_ZEXEL_COUNTERS 6  // uint[2]: mirror pixels shaded, exposed among them
-#define MIRAGE_UNIT_ZEXEL_MAPS 4      // sampler2DArray: every map of the mirror, mip levels
-#define MIRAGE_IMAGE_ZEXEL_HISTORY 0  // rgba32f: the mirror's last image (the no-clear option)
-#define MIRAGE_IMAGE_ZEXEL_LEVEL_IN 1  // the pyramid build: the finer level
+#define MIRAGE_BIND_ZEXEL_KEYS 4        // uint per pixel: the nearest landed distance's bits
+#define MIRAGE_BIND_ZEXEL_INDICES 5     // uint per pixel: the zexel shown (slot bit 31, index)
+#define MIRAGE_BIND_ZEXEL_COUNTERS 6    // uint[2]: mirror pixels shaded, exposed among them
+#define MIRAGE_UNIT_ZEXEL_MAPS 4        // sampler2DArray: every map of the mirror, mip levels
+#define MIRAGE_IMAGE_ZEXEL_HISTORY 0    // rgba32f: the mirror's last image (the no-clear option)
+#define MIRAGE_IMAGE_ZEXEL_LEVEL_IN 1   // the pyramid build: the finer level
 #define MIRAGE_IMAGE_ZEXEL_LEVEL_OUT 2  // ... and the coarser one it writes
 
-#define MIRAGE_ZEXEL_GROUP 64      // invocations per warp work group (one zexel each)
-#define MIRAGE_ZEXEL_MAX_SPLAT 8   // the largest magnification-sized splat, in pixels
-#define MIRAGE_ZEXEL_EMPTY 0xFFFFFFFFu  // a pixel no zexel reached (an exposure)
+#define MIRAGE_ZEXEL_GROUP 64              // invocations per warp work group (one zexel each)
+#define MIRAGE_ZEXEL_MAX_SPLAT 8           // the largest magnification-sized splat, in pixels
+#define MIRAGE_ZEXEL_EMPTY 0xFFFFFFFFu     // a pixel no zexel reached (an exposure)
 #define MIRAGE_ZEXEL_SLOT_BIT 0x80000000u  // the second map of the frame
 
 SHARED_BEGIN

@@ -49,11 +49,10 @@ void warpOnGpu(const gpu::Program& program, const ZexelWarpJob& job, const View&
   program.set("u_width", width);
   program.set("u_po_inverse", mat4(glm::inverse(zexelPixelMatrix(output, output.nearPlane()))));
   program.set("u_co", output.eye());
-  glProgramUniform2i(program.id(), program.location("u_size"), output.size().x,
-                     output.size().y);
+  glProgramUniform2i(program.id(), program.location("u_size"), output.size().x, output.size().y);
   program.set("u_splat", job.splat);
-  glProgramUniform4i(program.id(), program.location("u_rect"), job.rect.x, job.rect.y,
-                     job.rect.z, job.rect.w);
+  glProgramUniform4i(program.id(), program.location("u_rect"), job.rect.x, job.rect.y, job.rect.z,
+                     job.rect.w);
   program.use();
   const GLuint groups = GLuint((width + 7) / 8);
   for (int pass = 0; pass < 2; ++pass) {
@@ -70,8 +69,7 @@ void warpOnGpu(const gpu::Program& program, const ZexelWarpJob& job, const View&
   }
 }
 
-long warpOnCpu(const ZexelWarpJob& job, const View& output, int threads,
-               ZexelWarpTarget& target) {
+long warpOnCpu(const ZexelWarpJob& job, const View& output, int threads, ZexelWarpTarget& target) {
   const ivec2 size = output.size();
   const WarpCamera out{zexelPixelMatrix(output, output.nearPlane()), output.eye()};
   std::vector<uint32_t> keys(size_t(size.x) * size_t(size.y), MIRAGE_ZEXEL_EMPTY);
