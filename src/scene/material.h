@@ -25,6 +25,7 @@ struct Material {
   float fresnel_f0 = 1.0f;         // [0, 1]; 1 = a perfect mirror at every angle
   float attenuation_range = 0.0f;  // >= 0; 0 = no distance attenuation
   int normal_map = -1;             // index into Scene::textures
+  bool planar = false;  // declared a planar mirror: the planar-mirror methods check and report it
 
   bool isReflector() const { return kind == Kind::kReflector; }
   shading::MaterialData gpuData() const;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <spdlog/spdlog.h>
+
 #include "core/error.h"
 
 namespace mirage {
@@ -115,14 +117,22 @@ bool isPlanarInstance(const Scene& scene, int instance, const mat4& model, vec3*
   return true;
 }
 
-std::vector<int> planarReflectors(const Scene& scene, int* not_planar) {
+std::vector<int> planarReflectors(const Scene& scene, int* not_planar, const char* method) {
   std::vector<int> planar;
   int others = 0;
   for (int i : scene.reflectorInstances()) {
-    if (isPlanarInstance(scene, i, scene.instances[size_t(i)].matrixAt(0.0f)))
+    const Instance& instance = scene.instances[size_t(i)];
+    if (isPlanarInstance(scene, i, instance.matrixAt(0.0f))) {
       planar.push_back(i);
-    else
-      ++others;
+      continue;
+    }
+    ++others;
+    const Material& material = scene.materials[size_t(instance.material)];
+    if (material.planar)
+      spdlog::warn(
+          "{}: reflector '{}' is not planar, though its material '{}' declares \"planar\": true; "
+          "it is shown as the method shows curved reflectors",
+          method, instance.name, material.name);
   }
   if (not_planar) *not_planar = others;
   return planar;

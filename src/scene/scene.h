@@ -84,8 +84,11 @@ struct Scene {
 // `normal` receives its world-space plane normal under `model`.
 bool isPlanarInstance(const Scene& scene, int instance, const mat4& model, vec3* normal = nullptr);
 // The reflector instances that are planar at time 0, in order; `not_planar` (when given)
-// receives how many others there are.
-std::vector<int> planarReflectors(const Scene& scene, int* not_planar = nullptr);
+// receives how many others there are. Reflectors whose material declares them planar but that
+// are not are logged as a warning naming `method`, the instance and the material: the method
+// shows them its other way.
+std::vector<int> planarReflectors(const Scene& scene, int* not_planar = nullptr,
+                                  const char* method = "");
 
 // The plane of a planar instance under `model`: the centre of its mesh's bounds (on the plane)
 // and the unit normal turned towards `eye`; false when the instance is not planar or `eye` lies

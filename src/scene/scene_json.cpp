@@ -134,9 +134,10 @@ Material parseMaterial(Context& ctx, const Field& f, std::vector<TextureEntry>& 
     }
   } else if (kind == "reflector") {
     f.allowKeys({"name", "type", "base", "tint", "reflectivity", "fresnel_f0", "attenuation_range",
-                 "normal_map"},
+                 "normal_map", "planar"},
                 "a reflector material");
     m.kind = Material::Kind::kReflector;
+    m.planar = f.booleanOr("planar", false);
     m.albedo = f.vector3Or("base", vec3(0.05f), kUnit);
     m.tint = f.vector3Or("tint", m.tint, kUnit);
     m.reflectivity = f.numberOr("reflectivity", m.reflectivity, kUnit);

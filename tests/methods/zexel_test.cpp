@@ -233,5 +233,33 @@ TEST(ZexelCli, BadParametersExitWithTheAllowedRange) {
   }
 }
 
+// A reflector declared planar that is not: reported by name, shown the method's other way (the
+// frame still renders), while the quad declared planar is warped.
+TEST(ZexelCli, ReflectorDeclaredPlanarThatIsNotIsReportedAndFallsBack) {
+  const auto dir = testTempDir("zexel-declared");
+  writeText(dir / "scene.json", R"({
+    "name": "declared",
+    "materials": [
+      {"name": "wall", "type": "diffuse", "albedo": [0.7, 0.6, 0.5]},
+      {"name": "flat-mirror", "type": "reflector", "planar": true}
+    ],
+    "meshes": [
+      {"name": "ball", "procedural": "sphere", "radius": 0.5, "segments": 16, "rings": 8},
+      {"name": "quad", "procedural": "quad", "size": [2, 2]}
+    ],
+    "instances": [
+      {"name": "floor", "mesh": "quad", "material": "wall", "rotate": [-90, 0, 0]},
+      {"name": "round-mirror", "mesh": "ball", "material": "flat-mirror", "translate": [1, 0.5, 0]},
+      {"name": "wall-mirror", "mesh": "quad", "material": "flat-mirror", "translate": [0, 1, -1]}
+    ],
+    "cameras": [{"name": "main", "position": [0, 1, 3], "target": [0, 0.8, 0], "fov_y": 50}]
+  })");
+  const CliResult r = runMirage("render --scene " + (dir / "scene.json").string() +
+                                " --method zexel --size 64x48 -o " + (dir / "out.png").string());
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("reflector 'round-mirror' is not planar"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("'wall-mirror' is not planar"), std::string::npos) << r.output;
+}
+
 }  // namespace
 }  // namespace mirage::test

@@ -16,7 +16,7 @@ class PlanarMethod final : public Method {
                                         "render/shaders/mirror_image.frag")),
         base_program_(
             gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")),
-        planar_(planarReflectors(setup.gpu.scene(), &not_planar_)) {}
+        planar_(planarReflectors(setup.gpu.scene(), &not_planar_, "planar")) {}
 
   const MethodInfo& info() const override { return info_; }
 

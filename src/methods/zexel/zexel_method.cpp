@@ -61,7 +61,7 @@ class ZexelMethod final : public Method {
             gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")),
         counters_(2 * sizeof(uint32_t)) {
     checkDriverLimits(options_);
-    for (int mirror : planarReflectors(setup.gpu.scene(), &not_planar_))
+    for (int mirror : planarReflectors(setup.gpu.scene(), &not_planar_, "zexel"))
       mirrors_.push_back(std::make_unique<ZexelMirror>(ZexelMirror{{mirror, options_}, {}}));
   }
 
