@@ -87,7 +87,7 @@ std::vector<int> ZexelMirrorMaps::select(const vec3& mirrored_eye, int count) co
   return nearestZexelMaps(directions_, point_, mirrored_eye, count);
 }
 
-int ZexelMirrorMaps::levelFor(int map, const View& output) const {
+int ZexelMirrorMaps::levelFor(int map, const View& output, float spacing_goal) const {
   if (levels() <= 1) return 0;
   // The map's centre zexel sees the mirror's centre, half a diagonal away: its spacing there.
   const WarpCamera in = warpCamera(map, 0);
@@ -98,9 +98,9 @@ int ZexelMirrorMaps::levelFor(int map, const View& output) const {
   const vec3 r = shading::zexel_warp(po_inverse, in.p, in.c, output.eye(), delta, xi + vec2(1, 0));
   const vec3 u = shading::zexel_warp(po_inverse, in.p, in.c, output.eye(), delta, xi + vec2(0, 1));
   const float spacing = std::max(glm::length(vec2(r) - vec2(o)), glm::length(vec2(u) - vec2(o)));
-  // The nearest level in the logarithm: zexels from ~0.7 to ~1.4 pixels apart.
+  // The coarsest level whose zexels land at most `spacing_goal` pixels apart.
   if (!(spacing > 0.0f)) return 0;
-  return std::clamp(int(std::round(std::log2(1.0f / spacing))), 0, levels() - 1);
+  return std::clamp(int(std::floor(std::log2(spacing_goal / spacing))), 0, levels() - 1);
 }
 
 }  // namespace mirage

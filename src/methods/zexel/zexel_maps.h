@@ -51,8 +51,9 @@ class ZexelMirrorMaps {
   // The maps a frame seen from `mirrored_eye` warps: the `count` nearest.
   std::vector<int> select(const vec3& mirrored_eye, int count) const;
 
-  // The level whose zexels land about a pixel apart in `output`, seen through map `map`.
-  int levelFor(int map, const View& output) const;
+  // The coarsest level whose zexels land at most `spacing_goal` pixels apart in `output`, seen
+  // through map `map` (at the mirror's centre).
+  int levelFor(int map, const View& output, float spacing_goal) const;
 
  private:
   void readBack();

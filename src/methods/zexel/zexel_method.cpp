@@ -151,7 +151,10 @@ class ZexelMethod final : public Method {
     const View mirrored = frame.view.mirrored(point, normal);
     ZexelWarpJob job{&m.maps, m.maps.select(mirrored.eye(), per_frame_), 0, splat_,
                      screenRect(frame, m.maps.mirror())};
-    job.level = level_ = m.maps.levelFor(job.chosen.front(), mirrored);
+    // Zexels at most a pixel apart for 1x1 splats, two for larger or magnification-sized ones:
+    // the splats still close the surface.
+    const float spacing_goal = splat_ == 1 ? 1.0f : 2.0f;
+    job.level = level_ = m.maps.levelFor(job.chosen.front(), mirrored, spacing_goal);
     m.target.resize(frame.view.size(), keep_);
     if (cpu_) {
       zexels_warped_ += warpOnCpu(job, mirrored, threads_, m.target);
@@ -234,9 +237,10 @@ MethodEntry zexelMethodEntry() {
                         "gpu: a compute shader with an exact depth test; cpu: McMillan's "
                         "occlusion-compatible order on parallel threads, no z-buffer"),
       ParamSpec::integer("zexel-threads", 0, 256, 0, "threads of the CPU warper (0: all cores)"),
-      ParamSpec::choice("zexel-lod", {"on", "off"}, "off",
+      ParamSpec::choice("zexel-lod", {"on", "off"}, "on",
                         "a mip-map-like hierarchy of the maps, the level chosen so that zexels "
-                        "land about a pixel apart (the paper's future work)")};
+                        "land at most 1 (1x1 splats) or 2 pixels apart (the paper's future work; off: every zexel "
+                        "of the full map, the paper)")};
   entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
     return std::make_unique<ZexelMethod>(setup);
   };
