@@ -1,5 +1,5 @@
 // Planar mirrors shown through images made for them from the mirrored eye (the scene
-// re-rendered: method `planar`; zexels warped: method `zexel`): the reflector pass both draw.
+// re-rendered: method `planar`, whose reflector pass this is).
 #pragma once
 
 #include <span>

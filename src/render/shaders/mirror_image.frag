@@ -1,5 +1,5 @@
 // A planar mirror that shows, at its own pixel, an image made for it from the mirrored eye (the
-// scene re-rendered: method `planar`; zexels warped: method `zexel`).
+// scene re-rendered: method `planar`).
 // That image's alpha is the distance from the mirrored eye to what it saw: the distance from the
 // real eye through the mirror point, so the reflected ray's length is that minus the distance
 // from the eye to the mirror point (the sky keeps MISS_DISTANCE).
