@@ -70,7 +70,7 @@ int runBench(const BenchArgs& args) {
   std::vector<std::string> names = parseMethodList(args.methods);
   warnUnusedParams(args.params, names);
   Scene scene = loadSceneFromArgs(args.scene);
-  View view(scene.camera(args.scene.camera), size);
+  View view(scene.camera(args.scene.camera).at(args.scene.time), size);
   auto context = openHeadlessContext();
   FrameRenderer renderer(scene, size);
   gpu::Clock gpu_clock = gpu::defaultClock(context->info().software);

@@ -1,17 +1,15 @@
-// `mirage compare`: every chosen method against the ray-traced reference on one view: images,
-// absolute-error and FLIP maps, PSNR/SSIM/FLIP (all pixels and reflector pixels) and times, as
-// DIR/index.html and DIR/metrics.json.
-#include <filesystem>
-
+// `mirage compare`: every chosen method against a reference (the ray tracer unless --reference
+// names another method) on one view, or on the frames along a camera path (--path-frames):
+// images, absolute-error and FLIP maps, PSNR/SSIM/FLIP (all pixels and reflector pixels) and
+// times, as DIR/index.html and DIR/metrics.json.
 #include <spdlog/spdlog.h>
 
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/compare_common.h"
 #include "core/error.h"
 #include "eval/flip.h"
 #include "eval/heatmap.h"
-#include "eval/report.h"
-#include "methods/frame.h"
 
 namespace mirage::app {
 
@@ -21,10 +19,16 @@ struct CompareArgs {
   SceneArgs scene;
   FrameArgs frame;
   std::string methods = "all";
+  std::string reference = "raytrace";
+  int path_frames = 0;
   std::string output;
   float heatmap_max = 0.25f;
   std::map<std::string, std::string> params;
+  const CLI::Option* time_option = nullptr;  // to tell a given --time from the default
 };
+
+// The frame count a path may be sampled at: enough for a minute at 60 Hz and then some.
+constexpr int kMaxPathFrames = 100000;
 
 struct Rendered {
   RenderedFrame frame;
@@ -45,89 +49,157 @@ Rendered renderTwice(FrameRenderer& renderer, Method& method, const View& view, 
   return r;
 }
 
-int runCompare(const CompareArgs& args) {
-  ivec2 size = parseSize(args.frame.size);
-  FrameSettings settings = frameSettings(args.frame);
-  DisplaySettings display = displaySettings(args.frame);
-  if (!(args.heatmap_max > 0.0f)) throwInput("--heatmap-max {}: must be > 0", args.heatmap_max);
-  std::vector<std::string> methods = parseMethodList(args.methods);
-  // The reference comes first and is always there.
-  std::erase(methods, std::string("raytrace"));
-  methods.insert(methods.begin(), "raytrace");
-  warnUnusedParams(args.params, methods);
-  Scene scene = loadSceneFromArgs(args.scene);
-  View view(scene.camera(args.scene.camera), size);
-  ensureDirectory(args.output);
-  auto context = openHeadlessContext();
-  FrameRenderer renderer(scene, size);
-
-  CompareReport report;
-  report.scene = scene.name;
-  report.scene_description = scene.description;
-  report.size = size;
-  report.order = settings.order;
-  report.device = context->info().renderer + " (" + context->info().version + ")";
-  report.cpu = cpuDescription();
-  report.triangles = scene.triangleCount();
-  report.heatmap_max = args.heatmap_max;
-  report.flip_ppd = FlipViewing{}.pixelsPerDegree();
-  report.tonemap = fmt::format("{}, exposure {}", toneMapName(display.tonemap), display.exposure);
-
+// The single view: each method renders it twice (a first and a steady frame).
+void compareView(CompareRun& run, const View& view, float time) {
   Image reference_display;
   IdImage mask;
-  std::filesystem::path dir(args.output);
-  for (const std::string& name : methods) {
-    auto method = renderer.createMethod(name, args.params, settings);
-    gpu::Clock clock =
-        method->info().gpu ? gpu::defaultClock(context->info().software) : gpu::Clock::kWall;
-    Rendered r = renderTwice(renderer, *method, view, args.scene.time, settings, clock);
-    Image shown = toDisplay(r.frame.color, display);
-    if (name == "raytrace") {
+  for (const std::string& name : run.methods) {
+    auto method = run.renderer->createMethod(name, run.params, run.settings);
+    Rendered r =
+        renderTwice(*run.renderer, *method, view, time, run.settings, methodClock(run, *method));
+    Image shown = toDisplay(r.frame.color, run.display);
+    if (name == run.methods.front()) {
       reference_display = shown;
       mask = r.frame.ids;
     }
-    MethodReport m;
-    m.name = name;
-    m.description = method->info().description;
+    MethodReport m = describeMethod(run, name, *method);
     Image2D<float> flip;
     m.metrics = compareImages(shown, reference_display, mask, &flip);
     m.ms = r.ms;
     m.first_ms = r.first_ms;
-    m.order_rendered = method->orderRendered(settings.order);
-    if (m.order_rendered < settings.order)
-      m.note = fmt::format("order {} only ({} requested)", m.order_rendered, settings.order);
-    m.stats = method->stats();
-    m.image = name + ".png";
-    m.error_image = name + ".err.png";
-    m.flip_image = name + ".flip.png";
-    writePng((dir / m.image).string(), shown);
-    writePng((dir / m.error_image).string(),
-             heatmap(absoluteError(shown, reference_display), args.heatmap_max));
-    // FLIP is in [0, 1] by construction: a fixed scale, comparable across methods and reports.
-    writePng((dir / m.flip_image).string(), heatmap(flip, 1.0f));
+    MapFiles files = writeMaps(run, name, shown, reference_display, flip);
+    m.image = files.image;
+    m.error_image = files.error_image;
+    m.flip_image = files.flip_image;
     spdlog::info(
         "{:>16}: PSNR {:6.2f} dB (reflector {:6.2f}), SSIM {:.4f}, FLIP {:.4f} (reflector {:.4f}), "
         "{:8.2f} ms",
         name, m.metrics.psnr, m.metrics.psnr_reflector, m.metrics.ssim, m.metrics.flip,
         m.metrics.flip_reflector, m.ms);
-    report.methods.push_back(std::move(m));
+    run.report.methods.push_back(std::move(m));
   }
+}
+
+// The camera --path-frames samples: the chosen one, which must have a path.
+const CameraDesc& pathCamera(const Scene& scene, const CompareArgs& args) {
+  const CameraDesc& camera = scene.camera(args.scene.camera);
+  if (camera.path.empty()) {
+    std::string with_path;
+    for (const CameraDesc& c : scene.cameras)
+      if (!c.path.empty()) with_path += (with_path.empty() ? "" : ", ") + c.name;
+    throwInput(
+        "--path-frames {}: camera '{}' of scene '{}' has no path ({}; pick one with --camera)",
+        args.path_frames, camera.name, scene.name,
+        with_path.empty() ? "no camera of this scene has one"
+                          : "cameras with a path: " + with_path);
+  }
+  return camera;
+}
+
+int runCompare(const CompareArgs& args) {
+  CompareRun run;
+  run.size = parseSize(args.frame.size);
+  run.settings = frameSettings(args.frame);
+  run.display = displaySettings(args.frame);
+  if (!(args.heatmap_max > 0.0f)) throwInput("--heatmap-max {}: must be > 0", args.heatmap_max);
+  run.heatmap_max = args.heatmap_max;
+  if (args.path_frames < 0 || args.path_frames > kMaxPathFrames)
+    throwInput("--path-frames {}: allowed 0..{} (0: one view at --time)", args.path_frames,
+               kMaxPathFrames);
+  if (args.path_frames > 0 && args.time_option && args.time_option->count() > 0)
+    throwInput(
+        "--time cannot be combined with --path-frames: the frames' times are the path's (from its "
+        "first key to its last)");
+  findMethod(args.reference);
+  run.methods = parseMethodList(args.methods);
+  // The reference comes first and is always there.
+  std::erase(run.methods, args.reference);
+  run.methods.insert(run.methods.begin(), args.reference);
+  run.params = args.params;
+  warnUnusedParams(args.params, run.methods);
+  Scene scene = loadSceneFromArgs(args.scene);
+  run.scene = &scene;
+  const CameraDesc* path_camera = args.path_frames > 0 ? &pathCamera(scene, args) : nullptr;
+  const View view(scene.camera(args.scene.camera).at(args.scene.time), run.size);
+  ensureDirectory(args.output);
+  run.dir = args.output;
+  auto context = openHeadlessContext();
+  run.context = context.get();
+  FrameRenderer renderer(scene, run.size);
+  run.renderer = &renderer;
+
+  CompareReport& report = run.report;
+  report.scene = scene.name;
+  report.scene_description = scene.description;
+  report.size = run.size;
+  report.order = run.settings.order;
+  report.reference = args.reference;
+  report.device = context->info().renderer + " (" + context->info().version + ")";
+  report.cpu = cpuDescription();
+  report.triangles = scene.triangleCount();
+  report.heatmap_max = args.heatmap_max;
+  report.flip_ppd = FlipViewing{}.pixelsPerDegree();
+  report.tonemap =
+      fmt::format("{}, exposure {}", toneMapName(run.display.tonemap), run.display.exposure);
+
+  if (path_camera)
+    comparePath(run, *path_camera, args.path_frames);
+  else
+    compareView(run, view, args.scene.time);
   writeCompareReport(args.output, report);
-  spdlog::info("report: {}", (dir / "index.html").string());
+  spdlog::info("report: {}", (run.dir / "index.html").string());
   return 0;
 }
 
 }  // namespace
 
+gpu::Clock methodClock(const CompareRun& run, const Method& method) {
+  return method.info().gpu ? gpu::defaultClock(run.context->info().software) : gpu::Clock::kWall;
+}
+
+MethodReport describeMethod(const CompareRun& run, const std::string& name, const Method& method) {
+  MethodReport m;
+  m.name = name;
+  m.description = method.info().description;
+  m.order_rendered = method.orderRendered(run.settings.order);
+  if (m.order_rendered < run.settings.order)
+    m.note = fmt::format("order {} only ({} requested)", m.order_rendered, run.settings.order);
+  m.stats = method.stats();
+  return m;
+}
+
+MapFiles writeMaps(const CompareRun& run, const std::string& stem, const Image& shown,
+                   const Image& reference, const Image2D<float>& flip) {
+  MapFiles files{stem + ".png", stem + ".err.png", stem + ".flip.png"};
+  writePng((run.dir / files.image).string(), shown);
+  writePng((run.dir / files.error_image).string(),
+           heatmap(absoluteError(shown, reference), run.heatmap_max));
+  // FLIP is in [0, 1] by construction: a fixed scale, comparable across methods and reports.
+  writePng((run.dir / files.flip_image).string(), heatmap(flip, 1.0f));
+  return files;
+}
+
 Command addCompareCommand(CLI::App& parent) {
   auto args = std::make_shared<CompareArgs>();
   Command cmd;
   cmd.app = parent.add_subcommand(
-      "compare", "render a scene with several methods and measure each against the ray tracer");
+      "compare", "render a scene with several methods and measure each against a reference");
   addSceneOptions(cmd.app, args->scene);
+  args->time_option = cmd.app->get_option("--time");
   std::string names;
   for (const std::string& n : methodNames()) names += (names.empty() ? "" : ",") + n;
   cmd.app->add_option("--methods", args->methods, "all, or a comma-separated list of: " + names)
+      ->capture_default_str();
+  cmd.app
+      ->add_option("--reference", args->reference,
+                   "the method the others are measured against (e.g. planar: exact for planar "
+                   "mirrors, and much faster than the ray tracer along a path)")
+      ->capture_default_str();
+  cmd.app
+      ->add_option("--path-frames", args->path_frames,
+                   "render N frames along the camera's path (--camera; equal steps from its first "
+                   "key to its last), each method keeping its state from frame to frame; 0: one "
+                   "view at --time (0..100000)")
       ->capture_default_str();
   addFrameOptions(cmd.app, args->frame);
   cmd.app->add_option("-o,--output", args->output, "report directory")->required();

@@ -26,7 +26,7 @@ int runRender(const RenderArgs& args) {
   findMethod(args.method);
   warnUnusedParams(args.params, {args.method});
   Scene scene = loadSceneFromArgs(args.scene);
-  View view(scene.camera(args.scene.camera), size);
+  View view(scene.camera(args.scene.camera).at(args.scene.time), size);
   auto context = openHeadlessContext();
   FrameRenderer renderer(scene, size);
   auto method = renderer.createMethod(args.method, args.params, settings);

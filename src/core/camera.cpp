@@ -4,6 +4,15 @@
 
 namespace mirage {
 
+CameraDesc CameraDesc::at(float time) const {
+  if (path.empty()) return *this;
+  CameraDesc c = *this;
+  CameraKey key = path.at(time);
+  c.position = key.position;
+  c.target = key.target;
+  return c;
+}
+
 View::View(const CameraDesc& camera, ivec2 size) : size_(size) {
   if (size.x <= 0 || size.y <= 0) throwInput("view size {}x{} must be positive", size.x, size.y);
   eye_ = camera.position;

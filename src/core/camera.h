@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "core/camera_path.h"
 #include "core/math.h"
 #include "core/ray.h"
 
@@ -18,6 +19,12 @@ struct CameraDesc {
   float fov_y_degrees = 45.0f;  // vertical field of view
   float near_plane = 0.05f;
   float far_plane = 1000.0f;
+  // Keyframes of position and target (a walk); empty for a still camera. A camera with a path
+  // keeps its first key in `position` and `target`.
+  CameraPath path;
+
+  // This camera at scene time `time`: position and target from the path, itself without one.
+  CameraDesc at(float time) const;
 };
 
 // Image pixels are addressed top-left first (row 0 is the top row), as in PNG files.

@@ -11,10 +11,11 @@
 
 #include "core/atomic_file.h"
 #include "eval/heatmap.h"
+#include "eval/report_html.h"
 
 namespace mirage {
 
-namespace {
+namespace report_html {
 
 nlohmann::json number(double v) {
   if (!std::isfinite(v)) return nullptr;
@@ -53,14 +54,176 @@ std::string escape(const std::string& s) {
   return out;
 }
 
-// A metrics-table column: how to read it from a method, print it, and which way is better.
-struct Column {
-  const char* title;
-  const char* tip;
-  const char* format;
-  bool higher_is_better;
-  double (*get)(const MethodReport&);
-};
+namespace {
+
+// The magma map as a CSS gradient: magma() is linear between these nine stops, so the bar shows
+// exactly the colours of the PNGs.
+std::string magmaGradient() {
+  std::string stops;
+  for (int i = 0; i <= 8; ++i) {
+    vec3 c = magma(float(i) / 8.0f) * 255.0f;
+    stops += fmt::format(",rgb({},{},{}) {}%", int(std::lround(c.x)), int(std::lround(c.y)),
+                         int(std::lround(c.z)), i * 100 / 8);
+  }
+  return "linear-gradient(to right" + stops + ")";
+}
+
+}  // namespace
+
+std::string colourBar(const std::string& low, const std::string& mid, const std::string& high) {
+  return fmt::format(
+      "<div class=bar></div><div class=ticks><span>{}</span><span>{}</span><span>{}</span></div>",
+      low, mid, high);
+}
+
+std::string pageStyle() {
+  return R"(<style>
+body{font-family:system-ui,sans-serif;margin:1.5em;background:#fafafa;color:#222;
+     max-width:1600px}
+h1{margin:0 0 .2em} h2{margin:1.4em 0 .4em;border-bottom:1px solid #ddd} h3{margin:.2em 0}
+.d{margin:.2em 0;color:#555;max-width:960px} small{color:#666}
+table{border-collapse:collapse;margin:.6em 0}
+td,th{border:1px solid #ccc;padding:.3em .6em;text-align:right}
+th{background:#eee;cursor:pointer;user-select:none}
+th[data-dir=asc]::after{content:" \25B4"} th[data-dir=desc]::after{content:" \25BE"}
+td:first-child,th:first-child,td:last-child,th:last-child{text-align:left}
+tr.ref td{background:#f0f0f0;color:#555}
+td.best{background:#d4f4d4;font-weight:bold}
+.maps{display:grid;grid-template-columns:repeat(3,minmax(0,1fr));gap:.8em;margin:.4em 0 1.2em}
+figure{margin:0} img{max-width:100%;height:auto;border:1px solid #ccc;display:block}
+figcaption{font-size:.9em;margin-top:.3em;line-height:1.4}
+.bar{height:12px;max-width:320px;margin-top:.3em;border:1px solid #ccc;background:)" +
+         magmaGradient() + R"(}
+.ticks{display:flex;justify-content:space-between;max-width:322px;font-size:.8em;color:#555;
+        margin-bottom:.2em}
+.method{border-top:1px solid #ddd;padding-top:.6em} ul{max-width:960px}
+</style>)";
+}
+
+// Sorting (click a header; the reference row stays on top) and flipping (hold a mouse button on
+// a method's image to see the reference in its place, the comparison FLIP models).
+const char* const kScript = R"(
+document.querySelectorAll('#metrics th').forEach((th, col) => {
+  th.addEventListener('click', () => {
+    const body = th.closest('table').tBodies[0];
+    const rows = [...body.rows].filter(r => !r.classList.contains('ref'));
+    const down = th.dataset.dir !== 'asc';
+    th.closest('tr').querySelectorAll('th').forEach(h => delete h.dataset.dir);
+    th.dataset.dir = down ? 'asc' : 'desc';
+    const key = r => r.cells[col].dataset.v ?? '';
+    const text = th.dataset.type === 'text';
+    rows.sort((a, b) => {
+      const x = key(a), y = key(b);
+      if (text) return down ? x.localeCompare(y) : y.localeCompare(x);
+      if (x === '' || y === '') return (x === '') - (y === '');
+      return down ? Number(x) - Number(y) : Number(y) - Number(x);
+    });
+    rows.forEach(r => body.appendChild(r));
+  });
+});
+document.querySelectorAll('img[data-ref]').forEach(img => {
+  const own = img.getAttribute('src');
+  img.addEventListener('pointerdown', e => { e.preventDefault(); img.src = img.dataset.ref; });
+  ['pointerup', 'pointerleave', 'pointercancel'].forEach(t =>
+    img.addEventListener(t, () => { img.src = own; }));
+});
+)";
+
+nlohmann::json metricsFields(const ImageMetrics& m) {
+  nlohmann::json e;
+  e["psnr"] = number(m.psnr);
+  e["psnr_reflector"] = number(m.psnr_reflector);
+  e["ssim"] = number(m.ssim);
+  e["ssim_reflector"] = number(m.ssim_reflector);
+  e["flip"] = number(m.flip);
+  e["flip_reflector"] = number(m.flip_reflector);
+  e["reflector_pixels"] = m.reflector_pixels;
+  return e;
+}
+
+// How to read the figures, for both kinds of report; `ms_note` says what the ms column holds.
+std::string readingSection(const CompareReport& r) {
+  const char* ms_note =
+      r.path.times.empty()
+          ? "<li><b>ms</b>: one steady frame, after a first frame that does the captures and "
+            "builds; use <code>mirage bench</code> for timing.</li>"
+          : "<li><b>ms</b>: the mean frame of the path after the first, which does the captures "
+            "and builds (<b>first frame ms</b>); use <code>mirage bench</code> for timing.</li>";
+  return fmt::format(
+      R"(<section id=reading><h2>How to read this report</h2><ul>
+<li><b>Reflector</b> columns are computed over the pixels the reference's reflector-ID buffer marks:
+where the reflections are. The whole-image figures are dominated by the direct view, which every
+method draws alike, so compare methods by the reflector columns.</li>
+<li><b>PSNR</b> (dB, peak 1, mean squared RGB error): &infin; means identical. <b>SSIM</b> (luma,
+11&times;11 Gaussian window): 1 means identical.</li>
+<li><b>FLIP</b> (LDR-FLIP, Andersson et al. 2020) estimates the difference a viewer notices when
+flipping between a method's image and the reference, per pixel from 0 (none) to 1; it weighs colour
+differences by what the eye resolves at the viewing distance and adds a penalty for edges and points
+that differ. Viewing conditions: {ppd:.1f} pixels per degree (a 0.7 m wide 3840-pixel screen seen
+from 0.7 m). The table gives its mean.</li>
+<li><b>Maps</b>, coloured with magma on fixed scales, the same for every method:
+|error| is the mean absolute RGB difference (black 0, pale yellow &ge; {hmax:g});
+FLIP goes from 0 (black) to 1 (pale yellow). Bright areas are where to look.</li>
+{ms_note}
+</ul></section>
+)",
+      fmt::arg("ppd", r.flip_ppd), fmt::arg("hmax", r.heatmap_max), fmt::arg("ms_note", ms_note));
+}
+
+bool isReference(const CompareReport& r, const MethodReport& m) {
+  return m.name == r.reference;
+}
+
+// The best value of a column among the methods other than the reference (NaN if none): the
+// reference against itself is trivially perfect, so ranking it would say nothing.
+double bestOf(const CompareReport& r, const Column& c) {
+  double best = std::nan("");
+  for (const MethodReport& m : r.methods) {
+    double v = c.get(m);
+    if (isReference(r, m) || std::isnan(v)) continue;
+    if (std::isnan(best) || (c.higher_is_better ? v > best : v < best)) best = v;
+  }
+  return best;
+}
+
+std::string tableRows(const CompareReport& r, std::span<const Column> columns) {
+  std::vector<double> best;
+  for (const Column& c : columns) best.push_back(bestOf(r, c));
+  std::string rows;
+  for (const MethodReport& m : r.methods) {
+    bool ref = isReference(r, m);
+    std::string row = fmt::format("<tr{}><td data-v=\"{}\"><a href=\"#{}\">{}</a>{}</td>",
+                                  ref ? " class=ref" : "", escape(m.name),
+                                  ref ? "reference" : "m-" + escape(m.name), escape(m.name),
+                                  ref ? " <small>(reference)</small>" : "");
+    for (size_t i = 0; i < columns.size(); ++i) {
+      double v = columns[i].get(m);
+      bool is_best = !ref && !std::isnan(v) && v == best[i];
+      std::string key = std::isnan(v) ? "" : std::isinf(v) ? "Infinity" : fmt::format("{}", v);
+      row += fmt::format("<td data-v=\"{}\"{}>{}</td>", key, is_best ? " class=best" : "",
+                         cell(v, columns[i].format));
+    }
+    rows += row + fmt::format("<td data-v=\"{0}\">{0}</td><td data-v=\"{1}\">{1}</td></tr>\n",
+                              m.order_rendered, escape(m.note));
+  }
+  return rows;
+}
+
+std::string tableHeader(std::span<const Column> columns) {
+  std::string h = "<th data-type=text title=\"click to sort\">method</th>";
+  for (const Column& c : columns)
+    h += fmt::format("<th title=\"{}; click to sort\">{} {}</th>", c.tip, c.title,
+                     c.higher_is_better ? "&uarr;" : "&darr;");
+  return h +
+         "<th title=\"reflection order rendered; click to sort\">order</th><th "
+         "data-type=text>note</th>";
+}
+
+}  // namespace report_html
+
+namespace {
+
+using namespace report_html;
 
 const Column kColumns[] = {
     {"PSNR dB", "all pixels; higher is better", "{:.2f}", true,
@@ -80,73 +243,6 @@ const Column kColumns[] = {
     {"first frame ms", "captures and builds included; lower is better", "{:.2f}", false,
      [](const MethodReport& m) { return m.first_ms; }},
 };
-
-bool isReference(const CompareReport& r, const MethodReport& m) {
-  return m.name == r.reference;
-}
-
-// The best value of a column among the methods other than the reference (NaN if none): the
-// reference against itself is trivially perfect, so ranking it would say nothing.
-double bestOf(const CompareReport& r, const Column& c) {
-  double best = std::nan("");
-  for (const MethodReport& m : r.methods) {
-    double v = c.get(m);
-    if (isReference(r, m) || std::isnan(v)) continue;
-    if (std::isnan(best) || (c.higher_is_better ? v > best : v < best)) best = v;
-  }
-  return best;
-}
-
-// The magma map as a CSS gradient: magma() is linear between these nine stops, so the bar shows
-// exactly the colours of the PNGs.
-std::string magmaGradient() {
-  std::string stops;
-  for (int i = 0; i <= 8; ++i) {
-    vec3 c = magma(float(i) / 8.0f) * 255.0f;
-    stops += fmt::format(",rgb({},{},{}) {}%", int(std::lround(c.x)), int(std::lround(c.y)),
-                         int(std::lround(c.z)), i * 100 / 8);
-  }
-  return "linear-gradient(to right" + stops + ")";
-}
-
-std::string colourBar(const std::string& low, const std::string& mid, const std::string& high) {
-  return fmt::format(
-      "<div class=bar></div><div class=ticks><span>{}</span><span>{}</span><span>{}</span></div>",
-      low, mid, high);
-}
-
-std::string tableRows(const CompareReport& r) {
-  std::vector<double> best;
-  for (const Column& c : kColumns) best.push_back(bestOf(r, c));
-  std::string rows;
-  for (const MethodReport& m : r.methods) {
-    bool ref = isReference(r, m);
-    std::string row = fmt::format("<tr{}><td data-v=\"{}\"><a href=\"#{}\">{}</a>{}</td>",
-                                  ref ? " class=ref" : "", escape(m.name),
-                                  ref ? "reference" : "m-" + escape(m.name), escape(m.name),
-                                  ref ? " <small>(reference)</small>" : "");
-    for (size_t i = 0; i < std::size(kColumns); ++i) {
-      double v = kColumns[i].get(m);
-      bool is_best = !ref && !std::isnan(v) && v == best[i];
-      std::string key = std::isnan(v) ? "" : std::isinf(v) ? "Infinity" : fmt::format("{}", v);
-      row += fmt::format("<td data-v=\"{}\"{}>{}</td>", key, is_best ? " class=best" : "",
-                         cell(v, kColumns[i].format));
-    }
-    rows += row + fmt::format("<td data-v=\"{0}\">{0}</td><td data-v=\"{1}\">{1}</td></tr>\n",
-                              m.order_rendered, escape(m.note));
-  }
-  return rows;
-}
-
-std::string tableHeader() {
-  std::string h = "<th data-type=text title=\"click to sort\">method</th>";
-  for (const Column& c : kColumns)
-    h += fmt::format("<th title=\"{}; click to sort\">{} {}</th>", c.tip, c.title,
-                     c.higher_is_better ? "&uarr;" : "&darr;");
-  return h +
-         "<th title=\"reflection order rendered; click to sort\">order</th><th "
-         "data-type=text>note</th>";
-}
 
 std::string methodFigures(const CompareReport& r, const MethodReport& m, const MethodReport* ref) {
   const ImageMetrics& x = m.metrics;
@@ -180,35 +276,6 @@ std::string methodFigures(const CompareReport& r, const MethodReport& m, const M
       fmt::arg("flip_r", cell(x.flip_reflector, "{:.4f}")));
 }
 
-// Sorting (click a header; the reference row stays on top) and flipping (hold a mouse button on
-// a method's image to see the reference in its place, the comparison FLIP models).
-const char* kScript = R"(
-document.querySelectorAll('#metrics th').forEach((th, col) => {
-  th.addEventListener('click', () => {
-    const body = th.closest('table').tBodies[0];
-    const rows = [...body.rows].filter(r => !r.classList.contains('ref'));
-    const down = th.dataset.dir !== 'asc';
-    th.closest('tr').querySelectorAll('th').forEach(h => delete h.dataset.dir);
-    th.dataset.dir = down ? 'asc' : 'desc';
-    const key = r => r.cells[col].dataset.v ?? '';
-    const text = th.dataset.type === 'text';
-    rows.sort((a, b) => {
-      const x = key(a), y = key(b);
-      if (text) return down ? x.localeCompare(y) : y.localeCompare(x);
-      if (x === '' || y === '') return (x === '') - (y === '');
-      return down ? Number(x) - Number(y) : Number(y) - Number(x);
-    });
-    rows.forEach(r => body.appendChild(r));
-  });
-});
-document.querySelectorAll('img[data-ref]').forEach(img => {
-  const own = img.getAttribute('src');
-  img.addEventListener('pointerdown', e => { e.preventDefault(); img.src = img.dataset.ref; });
-  ['pointerup', 'pointerleave', 'pointercancel'].forEach(t =>
-    img.addEventListener(t, () => { img.src = own; }));
-});
-)";
-
 }  // namespace
 
 std::string metricsJson(const CompareReport& r) {
@@ -224,16 +291,9 @@ std::string metricsJson(const CompareReport& r) {
   j["flip_pixels_per_degree"] = number(r.flip_ppd);
   nlohmann::json methods = nlohmann::json::object();
   for (const MethodReport& m : r.methods) {
-    nlohmann::json e;
-    e["psnr"] = number(m.metrics.psnr);
-    e["psnr_reflector"] = number(m.metrics.psnr_reflector);
-    e["ssim"] = number(m.metrics.ssim);
-    e["ssim_reflector"] = number(m.metrics.ssim_reflector);
-    e["flip"] = number(m.metrics.flip);
-    e["flip_reflector"] = number(m.metrics.flip_reflector);
+    nlohmann::json e = metricsFields(m.metrics);
     e["ms"] = number(m.ms);
     e["first_frame_ms"] = number(m.first_ms);
-    e["reflector_pixels"] = m.metrics.reflector_pixels;
     e["order_rendered"] = m.order_rendered;
     if (!m.note.empty()) e["note"] = m.note;
     nlohmann::json stats = nlohmann::json::object();
@@ -242,10 +302,12 @@ std::string metricsJson(const CompareReport& r) {
     methods[m.name] = e;
   }
   j["methods"] = methods;
+  if (!r.path.times.empty()) addPathJson(r, j);
   return j.dump(2) + "\n";
 }
 
 std::string reportHtml(const CompareReport& r) {
+  if (!r.path.times.empty()) return pathReportHtml(r);
   const MethodReport* ref = nullptr;
   for (const MethodReport& m : r.methods)
     if (!ref && isReference(r, m)) ref = &m;
@@ -262,26 +324,7 @@ std::string reportHtml(const CompareReport& r) {
       R"(<!doctype html>
 <html lang=en><head><meta charset=utf-8><meta name=viewport content="width=device-width">
 <title>mirage compare: {scene}</title>
-<style>
-body{{font-family:system-ui,sans-serif;margin:1.5em;background:#fafafa;color:#222;
-     max-width:1600px}}
-h1{{margin:0 0 .2em}} h2{{margin:1.4em 0 .4em;border-bottom:1px solid #ddd}} h3{{margin:.2em 0}}
-.d{{margin:.2em 0;color:#555;max-width:960px}} small{{color:#666}}
-table{{border-collapse:collapse;margin:.6em 0}}
-td,th{{border:1px solid #ccc;padding:.3em .6em;text-align:right}}
-th{{background:#eee;cursor:pointer;user-select:none}}
-th[data-dir=asc]::after{{content:" \25B4"}} th[data-dir=desc]::after{{content:" \25BE"}}
-td:first-child,th:first-child,td:last-child,th:last-child{{text-align:left}}
-tr.ref td{{background:#f0f0f0;color:#555}}
-td.best{{background:#d4f4d4;font-weight:bold}}
-.maps{{display:grid;grid-template-columns:repeat(3,minmax(0,1fr));gap:.8em;margin:.4em 0 1.2em}}
-figure{{margin:0}} img{{max-width:100%;height:auto;border:1px solid #ccc;display:block}}
-figcaption{{font-size:.9em;margin-top:.3em;line-height:1.4}}
-.bar{{height:12px;max-width:320px;margin-top:.3em;border:1px solid #ccc;background:{gradient}}}
-.ticks{{display:flex;justify-content:space-between;max-width:322px;font-size:.8em;color:#555;
-        margin-bottom:.2em}}
-.method{{border-top:1px solid #ddd;padding-top:.6em}} ul{{max-width:960px}}
-</style></head><body>
+{style}</head><body>
 <h1>{scene}</h1>
 <p class=d>{desc}</p>
 <p>{w}&times;{h} pixels, {tris} triangles, reflection order K = {order},
@@ -295,36 +338,19 @@ values.</p>
 among the methods other than the reference. Click a column header to sort (the reference stays
 on top).</p>
 </section>
-<section id=reading><h2>How to read this report</h2><ul>
-<li><b>Reflector</b> columns are computed over the pixels the reference's reflector-ID buffer marks:
-where the reflections are. The whole-image figures are dominated by the direct view, which every
-method draws alike, so compare methods by the reflector columns.</li>
-<li><b>PSNR</b> (dB, peak 1, mean squared RGB error): &infin; means identical. <b>SSIM</b> (luma,
-11&times;11 Gaussian window): 1 means identical.</li>
-<li><b>FLIP</b> (LDR-FLIP, Andersson et al. 2020) estimates the difference a viewer notices when
-flipping between a method's image and the reference, per pixel from 0 (none) to 1; it weighs colour
-differences by what the eye resolves at the viewing distance and adds a penalty for edges and points
-that differ. Viewing conditions: {ppd:.1f} pixels per degree (a 0.7 m wide 3840-pixel screen seen
-from 0.7 m). The table gives its mean.</li>
-<li><b>Maps</b>, coloured with magma on fixed scales, the same for every method:
-|error| is the mean absolute RGB difference (black 0, pale yellow &ge; {hmax:g});
-FLIP goes from 0 (black) to 1 (pale yellow). Bright areas are where to look.</li>
-<li><b>ms</b>: one steady frame, after a first frame that does the captures and builds; use
-<code>mirage bench</code> for timing.</li>
-</ul></section>
-<section id=methods><h2>Methods against the reference</h2>
+{reading}<section id=methods><h2>Methods against the reference</h2>
 {figures}</section>
 <script>{script}</script>
 </body></html>
 )",
       fmt::arg("scene", escape(r.scene)), fmt::arg("desc", escape(r.scene_description)),
-      fmt::arg("gradient", magmaGradient()), fmt::arg("w", r.size.x), fmt::arg("h", r.size.y),
+      fmt::arg("style", pageStyle()), fmt::arg("w", r.size.x), fmt::arg("h", r.size.y),
       fmt::arg("tris", r.triangles), fmt::arg("order", r.order),
       fmt::arg("reference", escape(r.reference)), fmt::arg("device", escape(r.device)),
       fmt::arg("cpu", escape(r.cpu)), fmt::arg("tonemap", escape(r.tonemap)),
-      fmt::arg("reference_section", reference_section), fmt::arg("header", tableHeader()),
-      fmt::arg("rows", tableRows(r)), fmt::arg("ppd", r.flip_ppd), fmt::arg("hmax", r.heatmap_max),
-      fmt::arg("figures", figures), fmt::arg("script", kScript));
+      fmt::arg("reference_section", reference_section), fmt::arg("header", tableHeader(kColumns)),
+      fmt::arg("rows", tableRows(r, kColumns)), fmt::arg("figures", figures),
+      fmt::arg("reading", readingSection(r)), fmt::arg("script", kScript));
 }
 
 void writeCompareReport(const std::string& directory, const CompareReport& report) {

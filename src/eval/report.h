@@ -1,7 +1,7 @@
 // The comparison report of `mirage compare`: DIR/index.html (the reference, then every method's
 // image, absolute-error map and FLIP map with their metrics, and a sortable metrics table) and
-// DIR/metrics.json, both written atomically. The HTML is self-contained: it loads nothing but
-// the report's own PNGs.
+// DIR/metrics.json, both written atomically; for one view or for the frames of a camera path.
+// The HTML is self-contained: it loads nothing but the report's own PNGs.
 #pragma once
 
 #include <map>
@@ -12,6 +12,12 @@
 #include "eval/metrics.h"
 
 namespace mirage {
+
+// A frame of a camera path whose images the report keeps (the first, middle and last).
+struct ShownFrame {
+  int frame = 0;
+  std::string image, error_image, flip_image;
+};
 
 struct MethodReport {
   std::string name;
@@ -25,6 +31,20 @@ struct MethodReport {
   std::string image;  // file names relative to the report directory
   std::string error_image;
   std::string flip_image;
+
+  // Camera-path reports (`--path-frames`): one entry per frame. `metrics` then holds the means
+  // over the frames, `worst` the worst frame's value of each figure, `ms` the mean of the frames
+  // after the first and `first_ms` the first; `shown` replaces the three image names.
+  std::vector<ImageMetrics> frame_metrics;
+  std::vector<double> frame_ms;
+  ImageMetrics worst;
+  std::vector<ShownFrame> shown;
+};
+
+// The frames of a camera path a report covers; no times: one view.
+struct PathInfo {
+  std::string camera;        // the scene camera whose path was sampled
+  std::vector<float> times;  // scene time of each frame, seconds
 };
 
 struct CompareReport {
@@ -39,12 +59,20 @@ struct CompareReport {
   float heatmap_max = 0.0f;  // error value drawn as the brightest heat-map colour
   float flip_ppd = 0.0f;     // pixels per degree the FLIP figures assume
   std::string tonemap;
+  PathInfo path;
   std::vector<MethodReport> methods;
 };
 
+// The means (over frames with a value: NaN frames, without reflector pixels, are left out) and
+// the worst values (lowest PSNR and SSIM, highest FLIP) of per-frame metrics.
+ImageMetrics meanMetrics(const std::vector<ImageMetrics>& frames);
+ImageMetrics worstMetrics(const std::vector<ImageMetrics>& frames);
+
 // JSON value for a metric: numbers, null for NaN (no such pixels) and for +inf (identical).
+// Path reports add "path" and per method "worst", "per_frame" (arrays) and "images".
 std::string metricsJson(const CompareReport& report);
 // The first method named `report.reference` is shown as the reference; the others are ranked.
+// Path reports show the means and worst frames, a per-frame table and the shown frames' images.
 std::string reportHtml(const CompareReport& report);
 void writeCompareReport(const std::string& directory, const CompareReport& report);
 

@@ -17,6 +17,18 @@ void addMainCamera(Scene& s, vec3 position, vec3 target, float fov_y_degrees) {
   s.cameras.push_back(cam);
 }
 
+// The scene's camera "walk": keyframes of position and target (core/camera_path), a recorded walk
+// that `mirage compare --path-frames` measures frame by frame.
+void addWalkCamera(Scene& s, std::vector<CameraKey> keys, float fov_y_degrees) {
+  CameraDesc cam;
+  cam.name = "walk";
+  cam.position = keys.front().position;
+  cam.target = keys.front().target;
+  cam.fov_y_degrees = fov_y_degrees;
+  cam.path.keys = std::move(keys);
+  s.cameras.push_back(cam);
+}
+
 quat rotationX(float degrees) {
   return glm::angleAxis(radians(degrees), vec3(1, 0, 0));
 }
@@ -138,6 +150,14 @@ Scene mirrorRoom() {
   addInstance(s, "teapot", teapot, red, placeAt({0.2f, 1.0f, -1.0f}, vec3(0.8f), rotationY(-30)));
   addBox(s, "green-box", {-2.2f, 0.4f, -0.2f}, vec3(0.4f), {0.2f, 0.7f, 0.25f}, 25.0f);
   addMainCamera(s, {2.4f, 2.1f, 3.4f}, {-0.6f, 1.3f, -2.0f}, 55.0f);
+  // Six seconds across the room from right to left at eye height, behind the teapot and the box,
+  // turning to keep the mirror in view.
+  addWalkCamera(s,
+                {{0.0f, {2.8f, 1.7f, 3.2f}, {-0.8f, 1.4f, -3.0f}},
+                 {2.0f, {1.2f, 1.65f, 2.4f}, {-0.6f, 1.4f, -3.2f}},
+                 {4.0f, {-0.9f, 1.7f, 2.2f}, {-0.4f, 1.4f, -3.2f}},
+                 {6.0f, {-2.8f, 1.75f, 2.9f}, {0.0f, 1.4f, -3.0f}}},
+                55.0f);
   return s;
 }
 
@@ -167,6 +187,14 @@ Scene twoMirrors() {
   int yellow = addMaterial(s, Material::diffuse("yellow", {0.9f, 0.8f, 0.15f}));
   addInstance(s, "column", column, yellow, placeAt({-1.0f, 0.0f, 0.7f}));
   addMainCamera(s, {2.3f, 1.8f, 3.0f}, {-3.0f, 1.1f, -1.2f}, 55.0f);
+  // Six seconds along the right mirror, between the mirrors (in front of both), looking across at
+  // the left one.
+  addWalkCamera(s,
+                {{0.0f, {2.2f, 1.7f, 3.0f}, {-3.0f, 1.2f, 0.8f}},
+                 {2.0f, {2.0f, 1.65f, 1.2f}, {-3.0f, 1.2f, -0.6f}},
+                 {4.0f, {2.1f, 1.7f, -0.6f}, {-3.0f, 1.2f, -1.8f}},
+                 {6.0f, {2.3f, 1.75f, -2.4f}, {-3.0f, 1.2f, -2.6f}}},
+                55.0f);
   return s;
 }
 

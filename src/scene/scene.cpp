@@ -92,6 +92,13 @@ void Scene::validate() const {
     if (!(c.near_plane > 0.0f && c.far_plane > c.near_plane))
       throwInput("{}: near = {}, far = {}: need 0 < near < far", where("cameras", i, c.name),
                  c.near_plane, c.far_plane);
+    // Scene files check their paths key by key (scene_json); this catches scenes built in code.
+    if (!c.path.empty() && c.path.keys.size() < 2)
+      throwInput("{}: the path has 1 key; a path needs at least 2", where("cameras", i, c.name));
+    for (size_t k = 1; k < c.path.keys.size(); ++k)
+      if (!(c.path.keys[k].time > c.path.keys[k - 1].time))
+        throwInput("{}: path[{}].time = {} must be greater than the previous key's time ({})",
+                   where("cameras", i, c.name), k, c.path.keys[k].time, c.path.keys[k - 1].time);
   }
 }
 

@@ -1,9 +1,12 @@
 // The command-line contract: bad input exits with 2 and one message naming the problem and the
 // allowed values; no OpenGL driver exits with 3; good input writes its files.
 #include <filesystem>
+#include <fstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "support/gl_test.h"
 #include "support/test_files.h"
@@ -55,6 +58,14 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"compare --scene sphere-over-checker --methods envmap,,none -o d", "empty method"},
         BadInput{"compare --scene sphere-over-checker --methods envmap,nope -o d",
                  "unknown method 'nope'"},
+        BadInput{"compare --scene mirror-room --reference nope -o d", "unknown method 'nope'"},
+        BadInput{"compare --scene mirror-room --camera walk --path-frames -1 -o d", "0..100000"},
+        BadInput{"compare --scene mirror-room --path-frames 3 -o d",
+                 "camera 'main' of scene 'mirror-room' has no path (cameras with a path: walk"},
+        BadInput{"compare --scene sphere-over-checker --path-frames 3 -o d",
+                 "no camera of this scene has one"},
+        BadInput{"compare --scene mirror-room --camera walk --path-frames 3 --time 1 -o d",
+                 "--time cannot be combined with --path-frames"},
         BadInput{"bench --scene sphere-over-checker --frames 0 --json b.json", "1..1000000"},
         BadInput{"render --scene sphere-over-checker --method billboard --order 0 -o x.png",
                  "1..16"},
@@ -120,6 +131,49 @@ TEST_F(CliWithGl, CompareWritesTheReport) {
   for (const char* f : {"index.html", "metrics.json", "raytrace.png", "envmap.png",
                         "envmap.err.png", "none.png", "envmap-infinite.png"})
     EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
+}
+
+// Quality along a walk: every method renders the path's frames in sequence; metrics.json holds
+// one value per frame and method, the report keeps the first, middle and last frame's images.
+TEST_F(CliWithGl, ComparePathFramesWritesPerFrameMetrics) {
+  auto dir = testTempDir("cli");
+  CliResult r = runMirage(
+      "compare --scene mirror-room --camera walk --path-frames 3 --methods none,planar "
+      "--reference planar --order 1 --size 96x64 -o " +
+      dir.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  std::ifstream in(dir / "metrics.json");
+  nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["reference"], "planar");
+  EXPECT_EQ(j["path"]["camera"], "walk");
+  EXPECT_EQ(j["path"]["frames"], 3);
+  std::vector<float> times = j["path"]["times"];
+  ASSERT_EQ(times.size(), 3u);
+  EXPECT_FLOAT_EQ(times[0], 0.0f);  // the walk's first key ...
+  EXPECT_FLOAT_EQ(times[1], 3.0f);
+  EXPECT_FLOAT_EQ(times[2], 6.0f);  // ... to its last
+  ASSERT_EQ(j["methods"].size(), 2u);
+  for (const char* name : {"none", "planar"}) {
+    const nlohmann::json& m = j["methods"][name];
+    for (const char* key : {"psnr", "psnr_reflector", "ssim", "flip_reflector", "ms"})
+      EXPECT_EQ(m["per_frame"][key].size(), 3u) << name << "." << key;
+    EXPECT_TRUE(m.contains("worst")) << name;
+    ASSERT_EQ(m["images"].size(), 3u) << name;
+    for (const nlohmann::json& image : m["images"])
+      for (const char* key : {"image", "error_image", "flip_image"})
+        EXPECT_TRUE(std::filesystem::exists(dir / image[key].get<std::string>())) << image;
+  }
+  // The mirror is in view on every frame: none (base colour) differs from the planar reference
+  // there, while the reference against itself is identical (null: infinite PSNR).
+  for (const nlohmann::json& v : j["methods"]["none"]["per_frame"]["psnr_reflector"]) {
+    ASSERT_TRUE(v.is_number());
+    EXPECT_LT(v.get<double>(), 30.0);
+  }
+  for (const nlohmann::json& v : j["methods"]["planar"]["per_frame"]["psnr_reflector"])
+    EXPECT_TRUE(v.is_null());
+  EXPECT_TRUE(std::filesystem::exists(dir / "index.html"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "none.frame1.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "none.png"));  // one view's names are not used
 }
 
 TEST_F(CliWithGl, BenchWritesJson) {

@@ -176,5 +176,96 @@ TEST(Report, WritesBothFiles) {
   std::filesystem::remove_all(dir);
 }
 
+// Camera-path reports: means leave out frames without reflector pixels, the worst frame is the
+// lowest PSNR/SSIM and the highest FLIP; the JSON carries per-frame arrays and the kept images,
+// the HTML a row per frame and only the kept frames' images, with the reference's for flipping.
+TEST(Report, PathMeansAndWorstFrames) {
+  ImageMetrics a, b, c;
+  a.psnr_reflector = 20.0, b.psnr_reflector = 30.0, c.psnr_reflector = kNan;
+  a.flip_reflector = 0.2, b.flip_reflector = 0.1, c.flip_reflector = kNan;
+  a.ssim = 0.9, b.ssim = 0.7, c.ssim = 0.8;
+  a.reflector_pixels = 100, b.reflector_pixels = 200, c.reflector_pixels = 0;
+  ImageMetrics mean = meanMetrics({a, b, c});
+  EXPECT_DOUBLE_EQ(mean.psnr_reflector, 25.0);
+  EXPECT_DOUBLE_EQ(mean.flip_reflector, 0.15);
+  EXPECT_DOUBLE_EQ(mean.ssim, 0.8);
+  EXPECT_EQ(mean.reflector_pixels, 100u);
+  ImageMetrics worst = worstMetrics({a, b, c});
+  EXPECT_DOUBLE_EQ(worst.psnr_reflector, 20.0);
+  EXPECT_DOUBLE_EQ(worst.flip_reflector, 0.2);
+  EXPECT_DOUBLE_EQ(worst.ssim, 0.7);
+  EXPECT_TRUE(std::isnan(meanMetrics({c}).psnr_reflector));
+  // An identical frame (infinite PSNR) makes the mean infinite, as for the reference itself.
+  a.psnr = kInf, b.psnr = 30.0;
+  EXPECT_TRUE(std::isinf(meanMetrics({a, b}).psnr));
+  EXPECT_DOUBLE_EQ(worstMetrics({a, b}).psnr, 30.0);
+}
+
+CompareReport samplePathReport() {
+  CompareReport r = sampleReport();
+  r.path.camera = "walk";
+  r.path.times = {0.0f, 1.5f, 3.0f, 4.5f, 6.0f};
+  for (MethodReport& m : r.methods) {
+    for (int f = 0; f < 5; ++f) {
+      ImageMetrics x = m.metrics;
+      if (m.name != "raytrace") x.psnr_reflector += f;  // 20, 21, ... for envmap
+      m.frame_metrics.push_back(x);
+      m.frame_ms.push_back(m.ms + f);
+    }
+    for (int f : {0, 2, 4})
+      m.shown.push_back({f, m.name + ".frame" + std::to_string(f) + ".png",
+                         m.name + ".frame" + std::to_string(f) + ".err.png",
+                         m.name + ".frame" + std::to_string(f) + ".flip.png"});
+    m.metrics = meanMetrics(m.frame_metrics);
+    m.worst = worstMetrics(m.frame_metrics);
+  }
+  return r;
+}
+
+TEST(Report, PathJsonHasPerFrameArrays) {
+  nlohmann::json j = nlohmann::json::parse(metricsJson(samplePathReport()));
+  EXPECT_EQ(j["path"]["camera"], "walk");
+  EXPECT_EQ(j["path"]["frames"], 5);
+  EXPECT_EQ(j["path"]["times"].size(), 5u);
+  const nlohmann::json& envmap = j["methods"]["envmap"];
+  EXPECT_DOUBLE_EQ(envmap["psnr_reflector"].get<double>(), 22.0);  // the mean
+  EXPECT_DOUBLE_EQ(envmap["worst"]["psnr_reflector"].get<double>(), 20.0);
+  ASSERT_EQ(envmap["per_frame"]["psnr_reflector"].size(), 5u);
+  EXPECT_DOUBLE_EQ(envmap["per_frame"]["psnr_reflector"][4].get<double>(), 24.0);
+  EXPECT_DOUBLE_EQ(envmap["per_frame"]["ms"][1].get<double>(), 5.0);
+  EXPECT_EQ(envmap["per_frame"]["reflector_pixels"][0], 1234);
+  ASSERT_EQ(envmap["images"].size(), 3u);
+  EXPECT_EQ(envmap["images"][1]["frame"], 2);
+  EXPECT_EQ(envmap["images"][1]["flip_image"], "envmap.frame2.flip.png");
+  EXPECT_TRUE(j["methods"]["raytrace"]["per_frame"]["psnr"][0].is_null());  // identical
+}
+
+TEST(Report, PathHtmlShowsEveryFrameAndOnlyTheKeptImages) {
+  CompareReport r = samplePathReport();
+  std::string html = reportHtml(r);
+  EXPECT_NE(html.find("Camera path <b>walk</b>: 5 frames"), std::string::npos);
+  // The per-frame table: a row per frame with envmap's reflector PSNR.
+  for (const char* row : {"<tr><td>0</td><td>0.000</td>", "<tr><td>4</td><td>6.000</td>"})
+    EXPECT_NE(html.find(row), std::string::npos) << row;
+  EXPECT_NE(html.find(">24.00</td>"), std::string::npos);
+  std::set<std::string> used;
+  std::regex attr(R"((src|data-ref)=\"([^\"]*)\")");
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), attr); it != std::sregex_iterator();
+       ++it)
+    used.insert((*it)[2]);
+  for (const MethodReport& m : r.methods)
+    for (const ShownFrame& f : m.shown) {
+      EXPECT_TRUE(used.count(f.image)) << f.image;
+      if (m.name == "raytrace") continue;
+      EXPECT_TRUE(used.count(f.error_image)) << f.error_image;
+      EXPECT_TRUE(used.count(f.flip_image)) << f.flip_image;
+    }
+  for (const std::string& v : used) EXPECT_NE(v.find(".frame"), std::string::npos) << v;
+  // Pressing envmap's frame-2 image shows the reference's frame 2.
+  EXPECT_NE(html.find("src=\"envmap.frame2.png\" alt=\"envmap: frame 2, t = 3.00 s\" "
+                      "data-ref=\"raytrace.frame2.png\""),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace mirage

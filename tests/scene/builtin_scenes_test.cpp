@@ -1,7 +1,8 @@
 // Built-in scenes: every mesh of every one has unit normals (lathes with the axis at both ends
 // included); and `glass` (the hybrid paper's goblet-shaped mirror): one valid goblet of a moderate
 // triangle count standing on the floor, its bowl's inside facing up (concave), a straw through
-// its rim, the other objects clear of it, and the bowl large in camera "main".
+// its rim, the other objects clear of it, and the bowl large in camera "main"; the walks of the
+// planar-mirror scenes.
 #include <algorithm>
 #include <cmath>
 
@@ -134,6 +135,45 @@ TEST(BuiltinGlass, MainCameraLooksDownIntoALargeBowl) {
   EXPECT_LE(hi_y, 512.0f);
   EXPECT_GT(hi_x - lo_x, 0.4f * 720.0f);
   EXPECT_GT(hi_y - lo_y, 0.3f * (hi_x - lo_x));
+}
+
+// The "walk" cameras of mirror-room and two-mirrors: about six seconds, the eye in front of every
+// planar mirror at every moment and the mirror it looks at in view, so that every frame of
+// `compare --path-frames` measures reflections.
+TEST(BuiltinScenes, WalksStayInFrontOfTheMirrorAndKeepItInView) {
+  for (const char* name : {"mirror-room", "two-mirrors"}) {
+    Scene s = makeBuiltinScene(name);
+    const CameraDesc& walk = s.camera("walk");
+    ASSERT_GE(walk.path.keys.size(), 2u) << name;
+    EXPECT_NEAR(walk.path.duration(), 6.0f, 1.0f) << name;
+    std::vector<int> mirrors = planarReflectors(s);
+    ASSERT_FALSE(mirrors.empty()) << name;
+    const ivec2 size(720, 512);
+    float travelled = 0.0f;
+    vec3 previous = walk.at(walk.path.start()).position;
+    for (int k = 0; k <= 60; ++k) {
+      const float t = walk.path.start() + walk.path.duration() * float(k) / 60.0f;
+      View view(walk.at(t), size);
+      travelled += glm::distance(view.eye(), previous);
+      previous = view.eye();
+      int in_view = 0;
+      for (int i : mirrors) {
+        const mat4 model = s.instances[size_t(i)].matrixAt(t);
+        vec3 normal;
+        ASSERT_TRUE(isPlanarInstance(s, i, model, &normal));
+        const Bounds3 local = s.meshes[size_t(s.instances[size_t(i)].mesh)].bounds();
+        const vec3 centre = transformPoint(model, local.center());
+        // The mirror's front: its normal faces into the room (towards the scene's centre).
+        const vec3 front = glm::dot(normal, s.bounds().center() - centre) > 0.0f ? normal : -normal;
+        EXPECT_GT(glm::dot(front, view.eye() - centre), 0.3f) << name << " at t = " << t;
+        vec3 p = view.project(centre);
+        in_view += p.z > 0.0f && p.x > 0.05f * float(size.x) && p.x < 0.95f * float(size.x) &&
+                   p.y > 0.05f * float(size.y) && p.y < 0.95f * float(size.y);
+      }
+      EXPECT_GE(in_view, 1) << name << " at t = " << t;
+    }
+    EXPECT_GT(travelled, 3.0f) << name << ": a walk across the room";
+  }
 }
 
 }  // namespace

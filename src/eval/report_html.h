@@ -1,0 +1,51 @@
+// What the two kinds of compare report (one view: report.cpp; a camera path: report_path.cpp)
+// share: value formatting, the page's style and script, the reading notes. Internal to eval/.
+#pragma once
+
+#include <span>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "eval/report.h"
+
+namespace mirage::report_html {
+
+// A metric as JSON: null for NaN (no such pixels) and infinities (identical).
+nlohmann::json number(double v);
+// A metric in a table cell: "&ndash;" for NaN, "&infin;" for +inf.
+std::string cell(double v, const char* format);
+std::string escape(const std::string& s);
+// The magma colour bar under a map, with three tick labels.
+std::string colourBar(const std::string& low, const std::string& mid, const std::string& high);
+// The <style> element of both pages.
+std::string pageStyle();
+// Sorting the #metrics table by a header click; showing the reference while an image is pressed.
+extern const char* const kScript;
+// The "How to read this report" section.
+std::string readingSection(const CompareReport& r);
+// The JSON of one set of metrics (psnr, psnr_reflector, ssim, ..., reflector_pixels).
+nlohmann::json metricsFields(const ImageMetrics& m);
+
+// A metrics-table column: how to read it from a method, print it, and which way is better.
+struct Column {
+  const char* title;
+  const char* tip;
+  const char* format;
+  bool higher_is_better;
+  double (*get)(const MethodReport&);
+};
+
+bool isReference(const CompareReport& r, const MethodReport& m);
+// The best value of a column among the methods other than the reference (NaN if none).
+double bestOf(const CompareReport& r, const Column& c);
+// The #metrics table: a header cell per column (plus method, order, note), a row per method with
+// the best value of each column marked.
+std::string tableHeader(std::span<const Column> columns);
+std::string tableRows(const CompareReport& r, std::span<const Column> columns);
+
+// The camera-path additions: "path" at the top, "worst", "per_frame" and "images" per method.
+void addPathJson(const CompareReport& r, nlohmann::json& j);
+std::string pathReportHtml(const CompareReport& r);
+
+}  // namespace mirage::report_html
