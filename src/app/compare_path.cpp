@@ -42,6 +42,9 @@ void summarize(MethodReport& m) {
   double sum = 0.0;
   for (size_t i = 1; i < m.frame_ms.size(); ++i) sum += m.frame_ms[i];
   m.ms = m.frame_ms.size() > 1 ? sum / double(m.frame_ms.size() - 1) : m.first_ms;
+  m.stats.clear();
+  for (const auto& frame : m.frame_stats)
+    for (const auto& [key, value] : frame) m.stats[key] += value / double(m.frame_stats.size());
 }
 
 }  // namespace
@@ -70,6 +73,7 @@ void comparePath(CompareRun& run, const CameraDesc& camera, int frames) {
       gpu::FrameTimer timer(p.clock);
       run.renderer->render(*p.method, view, time, run.settings, &timer);
       p.report.frame_ms.push_back(timer.takeResults().front().total_ms);
+      p.report.frame_stats.push_back(p.method->stats());
       RenderedFrame frame = run.renderer->read();
       Image display = toDisplay(frame.color, run.display);
       if (&p == &methods.front()) {
@@ -90,6 +94,7 @@ void comparePath(CompareRun& run, const CameraDesc& camera, int frames) {
     MethodReport m = describeMethod(run, p.name, *p.method);
     m.frame_metrics = std::move(p.report.frame_metrics);
     m.frame_ms = std::move(p.report.frame_ms);
+    m.frame_stats = std::move(p.report.frame_stats);
     m.shown = std::move(p.report.shown);
     summarize(m);
     spdlog::info(

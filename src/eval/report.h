@@ -34,9 +34,11 @@ struct MethodReport {
 
   // Camera-path reports (`--path-frames`): one entry per frame. `metrics` then holds the means
   // over the frames, `worst` the worst frame's value of each figure, `ms` the mean of the frames
-  // after the first and `first_ms` the first; `shown` replaces the three image names.
+  // after the first and `first_ms` the first, `stats` the means of the frames' counters;
+  // `shown` replaces the three image names.
   std::vector<ImageMetrics> frame_metrics;
   std::vector<double> frame_ms;
+  std::vector<std::map<std::string, double>> frame_stats;
   ImageMetrics worst;
   std::vector<ShownFrame> shown;
 };

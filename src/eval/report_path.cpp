@@ -192,6 +192,11 @@ void addPathJson(const CompareReport& r, nlohmann::json& j) {
     }
     per_frame["ms"] = nlohmann::json::array();
     for (double ms : m.frame_ms) per_frame["ms"].push_back(number(ms));
+    // The methods' counters per frame (e.g. zexel's exposed_fraction); `stats` holds their means.
+    nlohmann::json stats = nlohmann::json::object();
+    for (const auto& frame : m.frame_stats)
+      for (const auto& [key, value] : frame) stats[key].push_back(number(value));
+    per_frame["stats"] = stats;
     e["per_frame"] = per_frame;
     nlohmann::json images = nlohmann::json::array();
     for (const ShownFrame& s : m.shown)
