@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "methods/zexel/zexel_camera.h"
+#include "methods/zexel/zexel_curved.h"
 #include "render/mirror_images.h"
 
 namespace mirage {
@@ -32,7 +33,8 @@ class ZexelMethod final : public Method {
                                                "render/shaders/mirror_image.frag")),
         base_program_(
             gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")),
-        empty_vao_(gpu::createVertexArray()) {
+        empty_vao_(gpu::createVertexArray()),
+        curved_(setup) {
     for (int mirror : planarReflectors(setup.gpu.scene(), &not_planar_))
       maps_.push_back(ZexelMap{mirror, nullptr, View(), vec3(0.0f), nullptr});
   }
@@ -42,6 +44,7 @@ class ZexelMethod final : public Method {
   // Captures every map the first time, when the scene changed, or when the eye crossed to a
   // mirror's other side.
   void update(FrameContext& frame) override {
+    curved_.update(frame);
     const bool changed = captured_version_ != frame.gpu.version() || !captured_;
     for (ZexelMap& map : maps_) {
       vec3 point, normal;
@@ -63,16 +66,19 @@ class ZexelMethod final : public Method {
         if (warp(frame, map)) shown.push_back({map.mirror, map.warped.get()});
     frame.target.bind();
     frame.passes.begin(frame.view, frame.settings);
+    curved_.draw(frame);
     drawMirrorImages(frame.gpu, shown, mirror_program_, base_program_);
   }
 
   int orderRendered(int requested) const override { return std::min(requested, 1); }
 
   std::map<std::string, double> stats() const override {
-    return {{"zexel_maps", double(maps_.size())},
-            {"zexel_captures", double(captures_)},
-            {"zexels_warped", double(zexels_warped_)},
-            {"reflectors_not_planar", double(not_planar_)}};
+    std::map<std::string, double> s = {{"zexel_maps", double(maps_.size())},
+                                       {"zexel_captures", double(captures_)},
+                                       {"zexels_warped", double(zexels_warped_)},
+                                       {"reflectors_not_planar", double(not_planar_)}};
+    curved_.addStats(s);
+    return s;
   }
 
  private:
@@ -141,6 +147,7 @@ class ZexelMethod final : public Method {
   bool captured_ = false;
   uint64_t captured_version_ = 0;
   long captures_ = 0, zexels_warped_ = 0;
+  ZexelCurvedReflectors curved_;  // the non-planar reflectors, by inverse warping
 };
 
 }  // namespace
@@ -151,7 +158,8 @@ MethodEntry zexelMethodEntry() {
   entry.info.description =
       "depth-preserving reflection maps: per planar mirror a map of colour and distance from a "
       "reference camera behind it, forward-warped (McMillan) to the mirrored eye each frame and "
-      "splatted (forward-mapped planar mirror paper); non-planar reflectors show base colour";
+      "splatted (forward-mapped planar mirror paper); non-planar reflectors inverse-warp a cube "
+      "map of colour and distance";
   entry.info.max_order = 1;
   entry.info.params = {
       ParamSpec::integer("zexel-size", 16, 4096, 512,
@@ -161,6 +169,7 @@ MethodEntry zexelMethodEntry() {
       ParamSpec::real("zexel-fov", 10.0, 170.0, 100.0,
                       "vertical field of view of the reference camera behind each mirror, in "
                       "degrees")};
+  for (const ParamSpec& p : ZexelCurvedReflectors::params()) entry.info.params.push_back(p);
   entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
     return std::make_unique<ZexelMethod>(setup);
   };
