@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "core/error.h"
+#include "methods/zexel/zexel_curved.h"
 #include "methods/zexel/zexel_maps.h"
 #include "methods/zexel/zexel_shared.h"
 #include "methods/zexel/zexel_warp_pass.h"
@@ -59,7 +60,8 @@ class ZexelMethod final : public Method {
             gpu::Program::graphics("render/shaders/scene.vert", "methods/zexel/zexel_mirror.frag")),
         base_program_(
             gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")),
-        counters_(2 * sizeof(uint32_t)) {
+        counters_(2 * sizeof(uint32_t)),
+        curved_(setup) {
     checkDriverLimits(options_);
     for (int mirror : planarReflectors(setup.gpu.scene(), &not_planar_, "zexel"))
       mirrors_.push_back(std::make_unique<ZexelMirror>(ZexelMirror{{mirror, options_}, {}}));
@@ -70,6 +72,7 @@ class ZexelMethod final : public Method {
   // Captures every map the first time, when the scene changed, or when the eye crossed to a
   // mirror's other side.
   void update(FrameContext& frame) override {
+    curved_.update(frame);
     const bool changed = captured_version_ != frame.gpu.version() || !captured_;
     for (auto& m : mirrors_) {
       vec3 point, normal;
@@ -96,6 +99,7 @@ class ZexelMethod final : public Method {
         draw(frame, *m);
         shown.push_back(m->maps.mirror());
       }
+    curved_.draw(frame);  // first: the base pass below then fails the depth test there
     base_program_.use();
     for (int i : frame.gpu.scene().reflectorInstances())
       if (std::find(shown.begin(), shown.end(), i) == shown.end()) frame.gpu.draw(i);
@@ -106,13 +110,16 @@ class ZexelMethod final : public Method {
   std::map<std::string, double> stats() const override {
     uint32_t counts[2] = {0, 0};
     counters_.download(counts, sizeof(counts));
-    return {{"zexel_maps", double(options_.count) * double(mirrors_.size())},
-            {"zexel_captures", double(captures_)},
-            {"zexels_warped", double(zexels_warped_)},
-            {"zexel_level", double(level_)},
-            {"mirror_pixels", double(counts[0])},
-            {"exposed_fraction", counts[0] > 0 ? double(counts[1]) / double(counts[0]) : 0.0},
-            {"reflectors_not_planar", double(not_planar_)}};
+    std::map<std::string, double> s = {
+        {"zexel_maps", double(options_.count) * double(mirrors_.size())},
+        {"zexel_captures", double(captures_)},
+        {"zexels_warped", double(zexels_warped_)},
+        {"zexel_level", double(level_)},
+        {"mirror_pixels", double(counts[0])},
+        {"exposed_fraction", counts[0] > 0 ? double(counts[1]) / double(counts[0]) : 0.0},
+        {"reflectors_not_planar", double(not_planar_)}};
+    curved_.addStats(s);
+    return s;
   }
 
  private:
@@ -198,6 +205,7 @@ class ZexelMethod final : public Method {
   bool captured_ = false;
   uint64_t captured_version_ = 0;
   long captures_ = 0, zexels_warped_ = 0;
+  ZexelCurvedReflectors curved_;  // the non-planar reflectors, by inverse warping
 };
 
 }  // namespace
@@ -209,7 +217,7 @@ MethodEntry zexelMethodEntry() {
       "depth-preserving reflection maps: per planar mirror maps of colour and distance from "
       "reference cameras on the hemisphere behind it, the nearest forward-warped (McMillan) to "
       "the mirrored eye each frame and splatted, on the GPU or the CPU (forward-mapped planar "
-      "mirror paper); non-planar reflectors show base colour";
+      "mirror paper); non-planar reflectors inverse-warp a cube map of colour and distance";
   entry.info.max_order = 1;
   entry.info.params = {
       ParamSpec::integer("zexel-size", 16, 65536, 512,
@@ -239,8 +247,10 @@ MethodEntry zexelMethodEntry() {
       ParamSpec::integer("zexel-threads", 0, 256, 0, "threads of the CPU warper (0: all cores)"),
       ParamSpec::choice("zexel-lod", {"on", "off"}, "on",
                         "a mip-map-like hierarchy of the maps, the level chosen so that zexels "
-                        "land at most 1 (1x1 splats) or 2 pixels apart (the paper's future work; off: every zexel "
+                        "land at most 1 (1x1 splats) or 2 pixels apart (the paper's future work; "
+                        "off: every zexel "
                         "of the full map, the paper)")};
+  for (const ParamSpec& p : ZexelCurvedReflectors::params()) entry.info.params.push_back(p);
   entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
     return std::make_unique<ZexelMethod>(setup);
   };

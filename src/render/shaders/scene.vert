@@ -20,6 +20,10 @@ out SurfaceData {
   flat ivec4 ids;
 } v_out;
 
+// One surface drawn by two programs (zexel's curved reflectors, then the base-colour pass that
+// must fail the depth test at their pixels) gets one depth in both.
+invariant gl_Position;
+
 void main() {
   InstanceData inst = instances[u_instance];
   vec4 world = inst.model * vec4(a_position, 1.0f);

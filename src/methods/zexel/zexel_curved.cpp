@@ -1,0 +1,79 @@
+#include "methods/zexel/zexel_curved.h"
+
+#include <algorithm>
+
+namespace mirage {
+
+std::vector<ParamSpec> ZexelCurvedReflectors::params() {
+  return {ParamSpec::choice("zexel-curved", {"inverse", "base"}, "inverse",
+                            "curved reflectors: inverse warping of a depth-preserving cube map "
+                            "of each, or their base colour"),
+          ParamSpec::integer("zexel-cube-size", 16, 2048, 256,
+                             "face size of each curved reflector's depth-preserving cube map, "
+                             "in texels"),
+          ParamSpec::real("zexel-curved-step", 0.25, 16.0, 1.0,
+                          "the inverse warp's step along the reflected ray's epipolar line in "
+                          "the cube map, in texels")};
+}
+
+ZexelCurvedReflectors::ZexelCurvedReflectors(const MethodSetup& setup)
+    : inverse_(setup.params.text("zexel-curved") == "inverse"),
+      size_(setup.params.integer("zexel-cube-size")),
+      search_(zexelInverseSettings(size_, float(setup.params.real("zexel-curved-step")))),
+      program_(
+          gpu::Program::graphics("render/shaders/scene.vert", "methods/zexel/zexel_inverse.frag")),
+      base_program_(gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")) {
+  const Scene& scene = setup.gpu.scene();
+  const std::vector<int> planar = planarReflectors(scene);
+  for (int i : scene.reflectorInstances())
+    if (std::find(planar.begin(), planar.end(), i) == planar.end()) curved_.push_back(i);
+  program_.set("u_step_angle", search_.step_angle);
+  program_.set("u_max_steps", search_.max_steps);
+  program_.set("u_max_slope", search_.max_slope);
+}
+
+void ZexelCurvedReflectors::update(FrameContext& frame) {
+  if (!inverse_ || curved_.empty() || frame.settings.order == 0) return;
+  const bool mip = frame.settings.mip;
+  if (captured_ && captured_version_ == frame.gpu.version() && captured_mip_ == mip) return;
+  const int levels = mip ? gpu::Texture::fullMipLevels(size_) : 1;
+  if (cubes_.layers() != 6 * int(curved_.size()) || cubes_.levels() != levels)
+    cubes_ = gpu::Texture::createCubeArray(GL_RGBA32F, size_, int(curved_.size()), levels);
+  if (!capture_) capture_ = std::make_unique<CubeCapture>(size_);
+  const float radius = std::max(frame.gpu.scene().bounds(frame.gpu.time()).radius(), 1e-3f);
+  centres_.clear();
+  for (size_t r = 0; r < curved_.size(); ++r) {
+    const int instance = curved_[r];
+    centres_.push_back(frame.gpu.instanceBounds(instance).center());
+    // The frame's alpha is the distance from the view's eye: from the centre here.
+    capture_->capture(cubes_, int(r), centres_.back(), 1e-3f * radius, 100.0f * radius,
+                      [&](const View& v) {
+                        frame.passes.begin(v, frame.settings);
+                        frame.passes.drawDirect();
+                        frame.passes.drawReflectors(base_program_, instance);
+                      });
+    ++captures_;
+  }
+  if (mip) cubes_.generateMipmaps();
+  captured_ = true;
+  captured_version_ = frame.gpu.version();
+  captured_mip_ = mip;
+}
+
+void ZexelCurvedReflectors::draw(FrameContext& frame) const {
+  if (!inverse_ || frame.settings.order == 0 || centres_.empty()) return;
+  cubes_.bind(MIRAGE_UNIT_METHOD);
+  program_.use();
+  for (size_t r = 0; r < curved_.size(); ++r) {
+    program_.set("u_layer", int(r));
+    program_.set("u_centre", centres_[r]);
+    frame.gpu.draw(curved_[r]);
+  }
+}
+
+void ZexelCurvedReflectors::addStats(std::map<std::string, double>& stats) const {
+  stats["zexel_curved_reflectors"] = inverse_ ? double(curved_.size()) : 0.0;
+  stats["zexel_cube_captures"] = double(captures_);
+}
+
+}  // namespace mirage

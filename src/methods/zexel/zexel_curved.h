@@ -1,0 +1,55 @@
+// Curved reflectors in method `zexel`: the forward-mapped planar mirror paper's future work,
+// a reference map serving a curved mirror through inverse warping. Each reflector that is not
+// planar (planarReflectors in scene.h: not flat to 1e-4 of its size at time 0) keeps a
+// depth-preserving cube map — colour, and in alpha the distance along the ray from the centre of
+// its bounds, as every frame target stores it — of the scene without it, the other reflectors
+// in their base colour (order 1, as the planar maps). Per pixel, zexel_inverse.frag searches the
+// reflected ray's epipolar line in that map (zexel_inverse_shared.h) and shows the colour where
+// the ray first passes behind the stored surface, or the environment.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "methods/method.h"
+#include "methods/zexel/zexel_cube_map.h"
+#include "render/cube_capture.h"
+
+namespace mirage {
+
+class ZexelCurvedReflectors {
+ public:
+  // The parameters it reads (`zexel-curved`, `zexel-cube-size`, `zexel-curved-step`), for the
+  // method's entry.
+  static std::vector<ParamSpec> params();
+
+  explicit ZexelCurvedReflectors(const MethodSetup& setup);
+
+  // Captures every map the first time and when the scene changed since (a camera move alone
+  // changes nothing here) or the mip setting did.
+  void update(FrameContext& frame);
+  // Draws the curved reflectors into the bound target, after ScenePasses::begin for the frame's
+  // view and before the pass that draws the remaining reflectors in their base colour: that pass
+  // then fails the depth test at these pixels (GL_LESS on the same invariant vertex shader).
+  // Draws nothing at order 0 or with `--zexel-curved base`.
+  void draw(FrameContext& frame) const;
+  // `zexel_curved_reflectors` (served by inverse warping) and `zexel_cube_captures`.
+  void addStats(std::map<std::string, double>& stats) const;
+
+ private:
+  bool inverse_;
+  int size_;
+  ZexelInverseSettings search_;
+  std::vector<int> curved_;  // the reflector instances served, in order (cube = index)
+  gpu::Program program_, base_program_;
+  gpu::Texture cubes_;  // RGBA32F cube-map array, one cube per curved reflector
+  std::vector<vec3> centres_;
+  std::unique_ptr<CubeCapture> capture_;
+  bool captured_ = false, captured_mip_ = false;
+  uint64_t captured_version_ = 0;
+  long captures_ = 0;
+};
+
+}  // namespace mirage
