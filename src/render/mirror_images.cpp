@@ -22,4 +22,21 @@ void drawMirrorImages(const GpuScene& gpu, std::span<const MirrorImage> images,
   }
 }
 
+ivec4 screenRect(const View& view, const Bounds3& b) {
+  const ivec2 size = view.size();
+  vec2 lo(float(size.x), float(size.y)), hi(0.0f);
+  for (int corner = 0; corner < 8; ++corner) {
+    const vec3 x((corner & 1) ? b.hi.x : b.lo.x, (corner & 2) ? b.hi.y : b.lo.y,
+                 (corner & 4) ? b.hi.z : b.lo.z);
+    const vec3 p = view.project(x);  // top-left origin; z: eye depth
+    if (!(p.z > 0.0f)) return ivec4(0, 0, size);
+    const vec2 window(p.x, float(size.y) - p.y);
+    lo = glm::min(lo, window);
+    hi = glm::max(hi, window);
+  }
+  const ivec2 first = glm::clamp(ivec2(glm::floor(lo)) - 1, ivec2(0), size);
+  const ivec2 last = glm::clamp(ivec2(glm::ceil(hi)) + 1, ivec2(0), size);
+  return ivec4(first, last);
+}
+
 }  // namespace mirage

@@ -22,4 +22,10 @@ void drawMirrorImages(const GpuScene& gpu, std::span<const MirrorImage> images,
                       const gpu::Program& mirror_program, const gpu::Program& base_program,
                       int skip = -1);
 
+// The pixels (window coordinates, origin bottom-left, [xy, zw)) that world bounds `b` may cover
+// in `view`, a pixel of margin around; the whole image when they reach behind the eye. Mirrored
+// images share the screen's pixel grid, so a mirror's rectangle also bounds the pixels its
+// image is read at.
+ivec4 screenRect(const View& view, const Bounds3& b);
+
 }  // namespace mirage

@@ -26,7 +26,9 @@ class PlanarMethod final : public Method {
     frame.passes.drawDirect();
     frame.beginPart(gpu::Part::kReflect);
     mirrored_views_ = 0;
-    drawReflectors(frame, frame.view, frame.target, frame.settings.order, 0, -1);
+    drawReflectors(frame, frame.view, frame.target, frame.settings.order, 0, -1,
+                   ivec4(0, 0, frame.view.size()));
+    glDisable(GL_SCISSOR_TEST);
   }
 
   std::map<std::string, double> stats() const override {
@@ -40,9 +42,11 @@ class PlanarMethod final : public Method {
   // one facing the eye shows the scene rendered from the eye mirrored in it, with `order` - 1
   // more bounces inside; the rest, and all of them at order 0, show their base colour.
   // `level` picks the images of this depth of recursion; `from` is the mirror `view` was
-  // mirrored in (it cannot see itself).
+  // mirrored in (it cannot see itself). Only the pixels of `rect` (window coordinates, [xy, zw))
+  // are drawn: a mirrored view is drawn within its mirror's screen rectangle (the scissor, as the
+  // paper's stencil: the pixels outside are never shown), nested ones within their parents'.
   void drawReflectors(FrameContext& frame, const View& view, const FrameTarget& target, int order,
-                      int level, int from) {
+                      int level, int from, ivec4 rect) {
     std::vector<MirrorImage> shown;
     if (order > 0) {
       for (size_t k = 0; k < planar_.size(); ++k) {
@@ -53,21 +57,32 @@ class PlanarMethod final : public Method {
                                  frame.gpu.instanceMatrices()[size_t(mirror)], view.eye(), point,
                                  normal))
           continue;
+        const ivec4 r = screenRect(view, frame.gpu.instanceBounds(mirror));
+        const ivec4 inner(glm::max(ivec2(r), ivec2(rect)),
+                          glm::min(ivec2(r.z, r.w), ivec2(rect.z, rect.w)));
+        if (inner.x >= inner.z || inner.y >= inner.w) continue;  // off screen
         const View mirrored = view.mirrored(point, normal);
         const FrameTarget& image = imageFor(level, k, view.size());
         image.bind();
+        scissor(inner);
         image.clear();
         frame.passes.begin(mirrored, frame.settings);
         frame.passes.drawDirect();
         ++mirrored_views_;
-        drawReflectors(frame, mirrored, image, order - 1, level + 1, mirror);
+        drawReflectors(frame, mirrored, image, order - 1, level + 1, mirror, inner);
         shown.push_back({mirror, &image});
       }
     }
     target.bind();
+    scissor(rect);
     frame.passes.begin(view, frame.settings);
     // The mirror this view is mirrored in lies on its near plane: never drawn in it.
     drawMirrorImages(frame.gpu, shown, program_, base_program_, from);
+  }
+
+  static void scissor(ivec4 r) {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(r.x, r.y, r.z - r.x, r.w - r.y);
   }
 
   // The image of mirror k at recursion depth `level`, made on first use.

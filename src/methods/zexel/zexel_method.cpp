@@ -8,6 +8,7 @@
 #include "methods/zexel/zexel_maps.h"
 #include "methods/zexel/zexel_shared.h"
 #include "methods/zexel/zexel_warp_pass.h"
+#include "render/mirror_images.h"
 
 namespace mirage {
 
@@ -128,26 +129,6 @@ class ZexelMethod final : public Method {
                                frame.gpu.instanceMatrices()[size_t(mirror)], eye, point, normal);
   }
 
-  // The pixels (window coordinates, [xy, zw)) the mirror's bounds cover on screen, the whole
-  // frame when they reach behind the eye.
-  static ivec4 screenRect(FrameContext& frame, int mirror) {
-    const ivec2 size = frame.view.size();
-    const Bounds3 b = frame.gpu.instanceBounds(mirror);
-    vec2 lo(float(size.x), float(size.y)), hi(0.0f);
-    for (int corner = 0; corner < 8; ++corner) {
-      const vec3 x((corner & 1) ? b.hi.x : b.lo.x, (corner & 2) ? b.hi.y : b.lo.y,
-                   (corner & 4) ? b.hi.z : b.lo.z);
-      const vec3 p = frame.view.project(x);  // top-left origin; z: eye depth
-      if (!(p.z > 0.0f)) return ivec4(0, 0, size);
-      const vec2 window(p.x, float(size.y) - p.y);
-      lo = glm::min(lo, window);
-      hi = glm::max(hi, window);
-    }
-    const ivec2 first = glm::clamp(ivec2(glm::floor(lo)) - 1, ivec2(0), size);
-    const ivec2 last = glm::clamp(ivec2(glm::ceil(hi)) + 1, ivec2(0), size);
-    return ivec4(first, last);
-  }
-
   // Warps the maps nearest the eye mirrored in `m` into its target; false when the mirror is
   // edge-on or the eye is on the other side than the maps'.
   bool warp(FrameContext& frame, ZexelMirror& m) {
@@ -157,7 +138,7 @@ class ZexelMethod final : public Method {
       return false;
     const View mirrored = frame.view.mirrored(point, normal);
     ZexelWarpJob job{&m.maps, m.maps.select(mirrored.eye(), per_frame_), 0, splat_,
-                     screenRect(frame, m.maps.mirror())};
+                     screenRect(frame.view, frame.gpu.instanceBounds(m.maps.mirror()))};
     // Zexels at most a pixel apart for 1x1 splats, two for larger or magnification-sized ones:
     // the splats still close the surface.
     const float spacing_goal = splat_ == 1 ? 1.0f : 2.0f;
