@@ -3,6 +3,7 @@ find_package(PkgConfig REQUIRED)
 pkg_check_modules(EPOXY REQUIRED IMPORTED_TARGET epoxy)
 pkg_check_modules(EGL REQUIRED IMPORTED_TARGET egl)
 pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
+pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)  # with its GLFW and OpenGL 3 backends
 find_package(glfw3 3.3 REQUIRED)
 find_package(glm REQUIRED)
 find_package(Imath REQUIRED)

@@ -17,5 +17,6 @@ Command addScenesCommand(CLI::App& parent);
 Command addRenderCommand(CLI::App& parent);
 Command addCompareCommand(CLI::App& parent);
 Command addBenchCommand(CLI::App& parent);
+Command addViewCommand(CLI::App& parent);
 
 }  // namespace mirage::app

@@ -1,0 +1,52 @@
+#include "viewer/orbit_camera.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mirage {
+
+namespace {
+constexpr float kRadiansPerPixel = 0.005f;
+constexpr float kPitchLimit = 1.55f;  // just short of straight up or down
+}  // namespace
+
+void OrbitCamera::reset(const CameraDesc& start) {
+  base_ = start;
+  target_ = start.target;
+  const vec3 offset = start.position - start.target;
+  distance_ = std::max(glm::length(offset), 1e-4f);
+  yaw_ = std::atan2(offset.x, offset.z);
+  pitch_ = std::asin(std::clamp(offset.y / distance_, -1.0f, 1.0f));
+}
+
+void OrbitCamera::orbit(vec2 delta) {
+  yaw_ -= delta.x * kRadiansPerPixel;
+  pitch_ = std::clamp(pitch_ + delta.y * kRadiansPerPixel, -kPitchLimit, kPitchLimit);
+}
+
+void OrbitCamera::pan(vec2 delta, float height) {
+  const CameraDesc d = desc();
+  const vec3 forward = glm::normalize(d.target - d.position);
+  const vec3 right = glm::normalize(glm::cross(forward, vec3(0.0f, 1.0f, 0.0f)));
+  const vec3 up = glm::cross(right, forward);
+  // One pixel moves the target by a pixel's size at the target's distance.
+  const float per_pixel = 2.0f * distance_ * std::tan(glm::radians(base_.fov_y_degrees) * 0.5f) /
+                          std::max(height, 1.0f);
+  target_ += (-delta.x * right + delta.y * up) * per_pixel;
+}
+
+void OrbitCamera::dolly(float steps) {
+  distance_ = std::max(distance_ * std::pow(0.9f, steps), 1e-3f);
+}
+
+CameraDesc OrbitCamera::desc() const {
+  CameraDesc d = base_;
+  d.path = {};
+  d.target = target_;
+  d.position = target_ + distance_ * vec3(std::cos(pitch_) * std::sin(yaw_), std::sin(pitch_),
+                                          std::cos(pitch_) * std::cos(yaw_));
+  d.up = vec3(0.0f, 1.0f, 0.0f);
+  return d;
+}
+
+}  // namespace mirage
