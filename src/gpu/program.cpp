@@ -71,6 +71,12 @@ void Program::set(const char* name, const vec3& v) const {
 void Program::set(const char* name, const vec4& v) const {
   glProgramUniform4fv(id(), location(name), 1, glm::value_ptr(v));
 }
+void Program::set(const char* name, const ivec2& v) const {
+  glProgramUniform2iv(id(), location(name), 1, glm::value_ptr(v));
+}
+void Program::set(const char* name, const ivec4& v) const {
+  glProgramUniform4iv(id(), location(name), 1, glm::value_ptr(v));
+}
 void Program::set(const char* name, const mat4& v) const {
   glProgramUniformMatrix4fv(id(), location(name), 1, GL_FALSE, glm::value_ptr(v));
 }

@@ -28,6 +28,8 @@ class Program {
   void set(const char* name, const vec2& v) const;
   void set(const char* name, const vec3& v) const;
   void set(const char* name, const vec4& v) const;
+  void set(const char* name, const ivec2& v) const;
+  void set(const char* name, const ivec4& v) const;
   void set(const char* name, const mat4& v) const;
 
  private:

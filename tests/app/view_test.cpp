@@ -3,19 +3,13 @@
 // same camera; bad input exits 2.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-
 #include "core/image.h"
 #include "eval/metrics.h"
+#include "support/gl_test.h"
 #include "support/test_files.h"
 
 namespace mirage::test {
 namespace {
-
-bool haveDisplay() {
-  const char* d = std::getenv("DISPLAY");
-  return d && *d;
-}
 
 TEST(ViewCli, WithoutDisplayExitsTwoAndSaysSo) {
   const auto dir = testTempDir("view-nodisplay");
@@ -39,10 +33,7 @@ TEST(ViewCli, BadInputExitsTwo) {
 
 // The viewer's frame is the headless renderer's: the same FrameRenderer, the same camera.
 TEST(ViewUnderXvfb, ScreenshotMatchesTheHeadlessRender) {
-  if (!haveDisplay()) {
-    if (std::getenv("MIRAGE_REQUIRE_DISPLAY")) FAIL() << "no DISPLAY: run under xvfb-run";
-    GTEST_SKIP() << "no DISPLAY (ctest runs this under xvfb-run)";
-  }
+  MIRAGE_NEED_DISPLAY();
   const auto dir = testTempDir("view-shot");
   for (const char* method : {"envmap", "planar", "zexel"}) {
     const std::string common =

@@ -8,17 +8,13 @@
 #include "gpu/gl.h"
 #include "gpu/window_context.h"
 #include "render/frame_target.h"
+#include "support/gl_test.h"
 
 namespace mirage::gpu {
 namespace {
 
-bool haveDisplay() {
-  const char* d = std::getenv("DISPLAY");
-  return d && *d;
-}
-
 TEST(WindowContext, WithoutDisplaySaysSo) {
-  if (haveDisplay()) GTEST_SKIP() << "a display is available";
+  if (test::haveDisplay()) GTEST_SKIP() << "a display is available";
   try {
     WindowContext window({});
     FAIL() << "a window opened without a display";
@@ -28,10 +24,7 @@ TEST(WindowContext, WithoutDisplaySaysSo) {
 }
 
 TEST(WindowContext, OpensOpenGL45AndRenders) {
-  if (!haveDisplay()) {
-    if (std::getenv("MIRAGE_REQUIRE_DISPLAY")) FAIL() << "no DISPLAY: run under xvfb-run";
-    GTEST_SKIP() << "no DISPLAY (ctest runs this under xvfb-run)";
-  }
+  MIRAGE_NEED_DISPLAY();
   WindowOptions options;
   options.size = {64, 48};
   options.visible = false;

@@ -35,4 +35,9 @@ void GlTest::SetUp() {
   GTEST_SKIP() << "no OpenGL 4.5 driver: " << why;
 }
 
+bool haveDisplay() {
+  const char* d = std::getenv("DISPLAY");
+  return d && *d;
+}
+
 }  // namespace mirage::test

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 #include "gpu/context.h"
 
 namespace mirage::test {
@@ -11,6 +13,19 @@ namespace mirage::test {
 // The process's context, or nullptr with the reason in `why`.
 gpu::Context* glContext(std::string* why = nullptr);
 bool glRequired();
+
+// An X display is set (DISPLAY): the window tests need one; ctest runs them under xvfb-run.
+bool haveDisplay();
+
+// In a window test: without a display, fails when MIRAGE_REQUIRE_DISPLAY is set (ctest's Xvfb
+// runs) and skips otherwise.
+#define MIRAGE_NEED_DISPLAY()                                                                \
+  do {                                                                                       \
+    if (!::mirage::test::haveDisplay()) {                                                    \
+      if (std::getenv("MIRAGE_REQUIRE_DISPLAY")) FAIL() << "no DISPLAY: run under xvfb-run"; \
+      GTEST_SKIP() << "no DISPLAY (ctest runs this under xvfb-run)";                         \
+    }                                                                                        \
+  } while (false)
 
 class GlTest : public ::testing::Test {
  protected:

@@ -53,7 +53,7 @@ void ZexelMirrorMaps::capture(FrameContext& frame, const vec3& point, const vec3
   // The hierarchy, one level from the one above.
   pyramid.use();
   for (int level = 1; level < levels; ++level) {
-    const int width = std::max(options_.size >> level, 1);
+    const int width = this->width(level);
     glBindImageTexture(MIRAGE_IMAGE_ZEXEL_LEVEL_IN, maps_.id(), level - 1, GL_TRUE, 0, GL_READ_ONLY,
                        GL_RGBA32F);
     glBindImageTexture(MIRAGE_IMAGE_ZEXEL_LEVEL_OUT, maps_.id(), level, GL_TRUE, 0, GL_WRITE_ONLY,
@@ -68,7 +68,7 @@ void ZexelMirrorMaps::capture(FrameContext& frame, const vec3& point, const vec3
 void ZexelMirrorMaps::readBack() {
   cpu_.assign(size_t(count()) * size_t(levels()), ZexelMap2D{});
   for (int level = 0; level < levels(); ++level) {
-    const int width = std::max(options_.size >> level, 1);
+    const int width = this->width(level);
     std::vector<vec4> all(size_t(width) * size_t(width) * size_t(count()));
     glGetTextureImage(maps_.id(), level, GL_RGBA, GL_FLOAT, GLsizei(all.size() * sizeof(vec4)),
                       all.data());

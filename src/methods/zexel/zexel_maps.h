@@ -5,6 +5,7 @@
 // each texel the nearest of its four children with the colours of those at its depth averaged).
 #pragma once
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 
@@ -34,6 +35,8 @@ class ZexelMirrorMaps {
   const vec3& normal() const { return normal_; }  // the side captured
   int count() const { return int(views_.size()); }
   int levels() const { return maps_.levels(); }
+  // Zexels per side at `level` of the hierarchy.
+  int width(int level) const { return std::max(options_.size >> level, 1); }
   const View& view(int map) const { return views_[size_t(map)]; }
   const gpu::Texture& texture() const { return maps_; }
   // A map's level on the CPU (cpu_copies), rows from the bottom.

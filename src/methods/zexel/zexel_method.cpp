@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <optional>
 
 #include "core/error.h"
 #include "methods/zexel/zexel_curved.h"
@@ -54,7 +55,6 @@ class ZexelMethod final : public Method {
         threads_(setup.params.integer("zexel-threads")),
         keep_(setup.params.text("zexel-clear") == "off"),
         fill_(setup.params.integer("zexel-fill")),
-        cpu_(options_.cpu_copies),
         warp_program_(gpu::Program::compute("methods/zexel/zexel_warp.comp")),
         pyramid_program_(gpu::Program::compute("methods/zexel/zexel_pyramid.comp")),
         mirror_program_(
@@ -96,8 +96,8 @@ class ZexelMethod final : public Method {
     counters_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_ZEXEL_COUNTERS);
     std::vector<int> shown;
     for (auto& m : mirrors_)
-      if (frame.settings.order > 0 && warp(frame, *m)) {
-        draw(frame, *m);
+      if (auto job = frame.settings.order > 0 ? warp(frame, *m) : std::nullopt) {
+        draw(frame, *m, *job);
         shown.push_back(m->maps.mirror());
       }
     curved_.draw(frame);  // first: the base pass below then fails the depth test there
@@ -129,13 +129,13 @@ class ZexelMethod final : public Method {
                                frame.gpu.instanceMatrices()[size_t(mirror)], eye, point, normal);
   }
 
-  // Warps the maps nearest the eye mirrored in `m` into its target; false when the mirror is
-  // edge-on or the eye is on the other side than the maps'.
-  bool warp(FrameContext& frame, ZexelMirror& m) {
+  // Warps the maps nearest the eye mirrored in `m` into its target and returns what it warped;
+  // nothing when the mirror is edge-on or the eye is on the other side than the maps'.
+  std::optional<ZexelWarpJob> warp(FrameContext& frame, ZexelMirror& m) {
     vec3 point, normal;
     if (!m.maps.captured() || !plane(frame, m.maps.mirror(), frame.view.eye(), point, normal) ||
         glm::dot(normal, m.maps.normal()) <= 0.0f)
-      return false;
+      return std::nullopt;
     const View mirrored = frame.view.mirrored(point, normal);
     ZexelWarpJob job{&m.maps, m.maps.select(mirrored.eye(), per_frame_), 0, splat_,
                      screenRect(frame.view, frame.gpu.instanceBounds(m.maps.mirror()))};
@@ -144,26 +144,24 @@ class ZexelMethod final : public Method {
     const float spacing_goal = splat_ == 1 ? 1.0f : 2.0f;
     job.level = level_ = m.maps.levelFor(job.chosen.front(), mirrored, spacing_goal);
     m.target.resize(frame.view.size(), keep_);
-    if (cpu_) {
+    if (options_.cpu_copies) {  // the CPU warper: the maps were kept on the CPU for it
       zexels_warped_ += warpOnCpu(job, mirrored, threads_, m.target);
     } else {
       warpOnGpu(warp_program_, job, mirrored, m.target);
-      const long width = std::max(options_.size >> job.level, 1);
+      const long width = m.maps.width(job.level);
       zexels_warped_ += width * width * long(job.chosen.size());
     }
-    job_ = job;
-    return true;
+    return job;
   }
 
-  // The mirror with the zexels its warp left at its pixels.
-  void draw(FrameContext& frame, const ZexelMirror& m) {
+  // The mirror with the zexels its warp (`job`) left at its pixels.
+  void draw(FrameContext& frame, const ZexelMirror& m, const ZexelWarpJob& job) {
     m.target.bind();
     m.maps.texture().bind(MIRAGE_UNIT_ZEXEL_MAPS);
-    const int second = job_.chosen.size() > 1 ? job_.chosen[1] : job_.chosen[0];
-    glProgramUniform2i(mirror_program_.id(), mirror_program_.location("u_layers"), job_.chosen[0],
-                       second);
-    mirror_program_.set("u_level", job_.level);
-    mirror_program_.set("u_width", std::max(options_.size >> job_.level, 1));
+    const int second = job.chosen.size() > 1 ? job.chosen[1] : job.chosen[0];
+    mirror_program_.set("u_layers", ivec2(job.chosen[0], second));
+    mirror_program_.set("u_level", job.level);
+    mirror_program_.set("u_width", m.maps.width(job.level));
     mirror_program_.set("u_keep", keep_ ? 1 : 0);
     mirror_program_.set("u_fill", fill_);
     mirror_program_.use();
@@ -176,12 +174,10 @@ class ZexelMethod final : public Method {
   int per_frame_, splat_, threads_;
   bool keep_;
   int fill_;
-  bool cpu_;
   gpu::Program warp_program_, pyramid_program_, mirror_program_, base_program_;
   gpu::Buffer counters_;
   std::vector<std::unique_ptr<ZexelMirror>> mirrors_;
   std::unique_ptr<FrameTarget> scratch_;
-  ZexelWarpJob job_;
   int not_planar_ = 0, level_ = 0;
   bool captured_ = false;
   uint64_t captured_version_ = 0;

@@ -44,15 +44,14 @@ void warpOnGpu(const gpu::Program& program, const ZexelWarpJob& job, const View&
   target.clear();
   target.bind();
   job.maps->texture().bind(MIRAGE_UNIT_ZEXEL_MAPS);
-  const int width = std::max(job.maps->view(0).size().x >> job.level, 1);
+  const int width = job.maps->width(job.level);
   program.set("u_level", job.level);
   program.set("u_width", width);
   program.set("u_po_inverse", mat4(glm::inverse(zexelPixelMatrix(output, output.nearPlane()))));
   program.set("u_co", output.eye());
-  glProgramUniform2i(program.id(), program.location("u_size"), output.size().x, output.size().y);
+  program.set("u_size", output.size());
   program.set("u_splat", job.splat);
-  glProgramUniform4i(program.id(), program.location("u_rect"), job.rect.x, job.rect.y, job.rect.z,
-                     job.rect.w);
+  program.set("u_rect", job.rect);
   program.use();
   const GLuint groups = GLuint((width + 7) / 8);
   for (int pass = 0; pass < 2; ++pass) {
