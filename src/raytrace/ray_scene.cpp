@@ -55,9 +55,12 @@ double RayScene::build(float time) {
   normal_matrices_.resize(scene_.instances.size());
   linear_parts_.resize(scene_.instances.size());
   world_.resize(scene_.instances.size());
+  deformed_.resize(scene_.instances.size());
+  light_ = scene_.lightAt(time);
   for (size_t i = 0; i < scene_.instances.size(); ++i) {
     const Instance& inst = scene_.instances[i];
-    const Mesh& mesh = scene_.meshes[size_t(inst.mesh)];
+    if (inst.deforms()) scene_.meshAt(int(i), time, deformed_[i]);
+    const Mesh& mesh = inst.deforms() ? deformed_[i] : scene_.meshes[size_t(inst.mesh)];
     matrices_[i] = inst.matrixAt(time);
     normal_matrices_[i] = normalMatrix(matrices_[i]);
     linear_parts_[i] = mat3(matrices_[i]);
@@ -84,6 +87,11 @@ double RayScene::build(float time) {
     throwRuntime("Embree could not build the scene (error {})", int(error));
   time_ = time;
   return watch.ms();
+}
+
+const Mesh& RayScene::mesh(int instance) const {
+  const Instance& inst = scene_.instances[size_t(instance)];
+  return inst.deforms() ? deformed_[size_t(instance)] : scene_.meshes[size_t(inst.mesh)];
 }
 
 RayHit RayScene::intersect(const Ray& ray) const {

@@ -35,6 +35,10 @@ class RayScene {
   const mat3& linearPartOf(int instance) const { return linear_parts_[size_t(instance)]; }
   // World-space vertex positions of an instance.
   const std::vector<vec3>& worldPositions(int instance) const { return world_[size_t(instance)]; }
+  // The instance's mesh in object space at builtTime(): its deformed copy when it deforms.
+  const Mesh& mesh(int instance) const;
+  // The light at builtTime().
+  const Light& light() const { return light_; }
 
   RayHit intersect(const Ray& ray) const;
   // The same hits as intersect() on each ray, for n rays, traced 16 at a time (see the .cpp).
@@ -50,6 +54,8 @@ class RayScene {
   std::vector<mat4> matrices_;
   std::vector<mat3> normal_matrices_, linear_parts_;
   std::vector<std::vector<vec3>> world_;
+  std::vector<Mesh> deformed_;  // per instance: the mesh at time_ (empty unless it deforms)
+  Light light_;
   float time_ = -1.0f;
 };
 

@@ -39,7 +39,7 @@ double RayTracer::prepare(float time) {
 template <bool kReference>
 RayTracer::SurfacePoint RayTracer::surface(const RayHit& hit, bool reflector) const {
   const Instance& inst = scene_.instances[size_t(hit.instance)];
-  const Mesh& mesh = scene_.meshes[size_t(inst.mesh)];
+  const Mesh& mesh = ray_scene_.mesh(hit.instance);
   const uvec3 tri = mesh.triangles[hit.primitive];
   const auto& world = ray_scene_.worldPositions(hit.instance);
   const mat4& model = ray_scene_.instanceMatrix(hit.instance);
@@ -95,8 +95,8 @@ vec3 RayTracer::shadeHit(const Ray& ray, const RayHit& hit, int bounces_left,
   if (!material.isReflector()) {
     vec3 albedo = sh::material_albedo(m, s.uv);
     if (material.albedo_texture >= 0) albedo *= sampleTexture(material.albedo_texture, s.uv);
-    return sh::shade_diffuse(albedo, n, scene_.light.direction, scene_.light.color,
-                             scene_.light.ambient);
+    const Light& light = ray_scene_.light();
+    return sh::shade_diffuse(albedo, n, light.direction, light.color, light.ambient);
   }
   if (bounces_left <= 0) return sh::reflector_base(m);
   vec3 to_viewer = -glm::normalize(ray.direction);

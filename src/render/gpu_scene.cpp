@@ -16,18 +16,23 @@ struct Vertex {
 };
 static_assert(sizeof(Vertex) == 48, "vertex layout");
 
+std::vector<Vertex> vertexData(const Mesh& mesh) {
+  std::vector<Vertex> vertices(mesh.positions.size());
+  for (size_t i = 0; i < vertices.size(); ++i) {
+    vertices[i].position = mesh.positions[i];
+    vertices[i].normal = i < mesh.normals.size() ? mesh.normals[i] : vec3(0, 1, 0);
+    vertices[i].uv = i < mesh.uvs.size() ? mesh.uvs[i] : vec2(0.0f);
+    vertices[i].tangent = i < mesh.tangents.size() ? mesh.tangents[i] : vec4(1, 0, 0, 1);
+  }
+  return vertices;
+}
+
 }  // namespace
 
 GpuScene::GpuScene(const Scene& scene, const EnvironmentMap& environment)
     : scene_(scene), environment_map_(environment) {
   for (const Mesh& mesh : scene.meshes) {
-    std::vector<Vertex> vertices(mesh.positions.size());
-    for (size_t i = 0; i < vertices.size(); ++i) {
-      vertices[i].position = mesh.positions[i];
-      vertices[i].normal = i < mesh.normals.size() ? mesh.normals[i] : vec3(0, 1, 0);
-      vertices[i].uv = i < mesh.uvs.size() ? mesh.uvs[i] : vec2(0.0f);
-      vertices[i].tangent = i < mesh.tangents.size() ? mesh.tangents[i] : vec4(1, 0, 0, 1);
-    }
+    const std::vector<Vertex> vertices = vertexData(mesh);
     GpuMesh g;
     g.vertices = gpu::Buffer::fromSpan<Vertex>(vertices);
     g.indices = gpu::Buffer::fromSpan<uvec3>(mesh.triangles);
@@ -72,22 +77,53 @@ GpuScene::GpuScene(const Scene& scene, const EnvironmentMap& environment)
   for (const Material& m : scene.materials) materials.push_back(m.gpuData());
   material_buffer_ = gpu::Buffer::fromSpan<shading::MaterialData>(materials);
   matrices_.assign(scene.instances.size(), mat4(1.0f));
+  deformed_.resize(scene.instances.size());
+  instance_versions_.assign(scene.instances.size(), 0);
+  shape_versions_.assign(scene.instances.size(), 0);
   setTime(0.0f);
 }
 
 void GpuScene::setTime(float time) {
   if (time == time_) return;
-  bool changed = false;
+  const bool first = time_ < 0.0f;
+  bool moved = false, changed = false;
   for (size_t i = 0; i < scene_.instances.size(); ++i) {
-    mat4 m = scene_.instances[i].matrixAt(time);
-    if (m != matrices_[i] || time_ < 0.0f) changed = true;
-    matrices_[i] = m;
+    const Instance& inst = scene_.instances[i];
+    const mat4 m = inst.matrixAt(time);
+    bool touched = false;
+    if (m != matrices_[i] || first) {
+      moved = touched = true;
+      matrices_[i] = m;
+    }
+    // A deformation that travels (speed != 0) changes the shape at every new time.
+    if (inst.deforms() && (first || inst.deformation.period() > 0.0f)) {
+      scene_.meshAt(int(i), time, deformed_[i]);
+      uploadVertices(inst.mesh, deformed_[i]);
+      ++shape_versions_[i];
+      changed = touched = true;
+    }
+    if (touched) ++instance_versions_[i];
+  }
+  const Light light = scene_.lightAt(time);
+  if (first || light.direction != light_.direction || light.color != light_.color ||
+      light.ambient != light_.ambient) {
+    light_ = light;
+    ++light_version_;
+    changed = true;
   }
   time_ = time;
-  if (changed) {
-    uploadInstances();
-    ++version_;
-  }
+  if (moved) uploadInstances();
+  if (moved || changed) ++version_;
+}
+
+void GpuScene::uploadVertices(int mesh_index, const Mesh& mesh) {
+  const std::vector<Vertex> vertices = vertexData(mesh);
+  meshes_[size_t(mesh_index)].vertices.upload(std::span<const Vertex>(vertices));
+}
+
+const Mesh& GpuScene::mesh(int instance) const {
+  const Instance& inst = scene_.instances[size_t(instance)];
+  return inst.deforms() ? deformed_[size_t(instance)] : scene_.meshes[size_t(inst.mesh)];
 }
 
 void GpuScene::uploadInstances() {
@@ -105,8 +141,7 @@ void GpuScene::uploadInstances() {
 }
 
 Bounds3 GpuScene::instanceBounds(int instance) const {
-  const Instance& inst = scene_.instances[size_t(instance)];
-  return scene_.meshes[size_t(inst.mesh)].bounds().transformed(matrices_[size_t(instance)]);
+  return scene_.localBounds(instance).transformed(matrices_[size_t(instance)]);
 }
 
 void GpuScene::bindShared() const {

@@ -25,11 +25,22 @@ class GpuScene {
   const gpu::Texture& environment() const { return environment_; }
   float time() const { return time_; }
 
-  // Moves the scene to `time` and uploads changed instance transforms.
+  // Moves the scene to `time`: uploads changed instance transforms and the vertices of deforming
+  // meshes, and moves the light.
   void setTime(float time);
-  // Increments whenever an instance transform, the light or the environment changes, so that
-  // methods re-capture only when something did.
+  // Increments whenever an instance transform or shape, the light or the environment changes, so
+  // that methods re-capture only when something did.
   uint64_t version() const { return version_; }
+  // Finer versions for methods that redo only what a change touches: an instance's increments
+  // when its transform or its shape changes, its shape version when its mesh deforms, the
+  // light's when the light moves or changes colour.
+  uint64_t instanceVersion(int instance) const { return instance_versions_[size_t(instance)]; }
+  uint64_t shapeVersion(int instance) const { return shape_versions_[size_t(instance)]; }
+  uint64_t lightVersion() const { return light_version_; }
+  // The light at time().
+  const Light& light() const { return light_; }
+  // The instance's mesh at time() in object space: its deformed copy when it deforms.
+  const Mesh& mesh(int instance) const;
   const mat4& instanceMatrix(int instance) const { return matrices_[size_t(instance)]; }
   const std::vector<mat4>& instanceMatrices() const { return matrices_; }
   Bounds3 instanceBounds(int instance) const;
@@ -47,6 +58,7 @@ class GpuScene {
   };
 
   void uploadInstances();
+  void uploadVertices(int mesh_index, const Mesh& mesh);
 
   const Scene& scene_;
   const EnvironmentMap& environment_map_;
@@ -55,8 +67,11 @@ class GpuScene {
   gpu::Texture environment_;
   gpu::Buffer instance_buffer_, material_buffer_;
   std::vector<mat4> matrices_;
+  std::vector<Mesh> deformed_;  // per instance: the mesh at time_ (empty unless it deforms)
+  std::vector<uint64_t> instance_versions_, shape_versions_;
+  Light light_;
   float time_ = -1.0f;
-  uint64_t version_ = 0;
+  uint64_t version_ = 0, light_version_ = 0;
 };
 
 }  // namespace mirage

@@ -8,9 +8,10 @@ shading::FrameData makeFrameData(const View& view, const Scene& scene, float tim
   f.view_proj = view.viewProjection();
   f.inv_view_proj = glm::inverse(f.view_proj);
   f.eye = vec4(view.eye(), time);
-  f.light_dir = vec4(glm::normalize(scene.light.direction), 0.0f);
-  f.light_color = vec4(scene.light.color, 0.0f);
-  f.ambient = vec4(scene.light.ambient, 0.0f);
+  const Light light = scene.lightAt(time);
+  f.light_dir = vec4(glm::normalize(light.direction), 0.0f);
+  f.light_color = vec4(light.color, 0.0f);
+  f.ambient = vec4(light.ambient, 0.0f);
   f.viewport = vec4(float(view.size().x), float(view.size().y), view.tanHalfFovY(), env_max_lod);
   f.options = ivec4(settings.order, settings.mip ? 1 : 0, 0, 0);
   f.env = vec4(1.0f, 0.0f, 0.0f, 0.0f);

@@ -43,6 +43,21 @@ void addCheckerFloor(Scene& s, float size) {
   addInstance(s, "floor", mesh, mat, {});
 }
 
+// Keyframes sampling `at` (a transform of u in [0, 1) over one period) 16 times a period,
+// looping: a smooth periodic motion for linear/slerp interpolation. Key 0 is at(0), so the scene
+// at time 0 is the scene without motion.
+template <typename At>
+Animation periodic(float period, At at) {
+  constexpr int kKeys = 16;
+  Animation a;
+  a.loop = true;
+  for (int k = 0; k <= kKeys; ++k) {
+    const float u = float(k) / float(kKeys);
+    a.keys.push_back({period * u, at(k == kKeys ? 0.0f : u)});
+  }
+  return a;
+}
+
 Scene sphereOverChecker() {
   Scene s;
   s.description = "one mirror sphere over a checkerboard floor with coloured boxes around it";
@@ -81,9 +96,17 @@ Scene spheres9(const SceneOptions& options) {
   // Front row first, as the reflectors are enabled one by one.
   int n = 0;
   for (int row = 2; row >= 0 && n < count; --row)
-    for (int col = 0; col < 3 && n < count; ++col, ++n)
-      addInstance(s, fmt::format("mirror-sphere-{}", n + 1), sphere, mirror,
-                  placeAt({2.2f * float(col - 1), 0.7f, 2.2f * float(row - 1)}));
+    for (int col = 0; col < 3 && n < count; ++col, ++n) {
+      const vec3 rest(2.2f * float(col - 1), 0.7f, 2.2f * float(row - 1));
+      const int sphere_instance = addInstance(s, fmt::format("mirror-sphere-{}", n + 1), sphere,
+                                              mirror, placeAt(rest));
+      // Every sphere bobs up to 0.5 above its rest place and back, each with its own period
+      // (2 to 3.6 s), so that their reflections of one another change from frame to frame.
+      const float period = 2.0f + 0.2f * float(n);
+      s.instances[size_t(sphere_instance)].animation = periodic(period, [&](float u) {
+        return placeAt(rest + vec3(0.0f, 0.25f * (1.0f - std::cos(2.0f * kPi * u)), 0.0f));
+      });
+    }
   addMainCamera(s, {0.0f, 5.2f, 8.6f}, {0.0f, 0.4f, 0.0f}, 45.0f);
   return s;
 }
@@ -147,8 +170,25 @@ Scene mirrorRoom() {
   addInstance(s, "pyramid", pyramid, stone, placeAt({0.2f, 0.0f, -1.0f}));
   int teapot = addMesh(s, procedural::teapotLike());
   int red = addMaterial(s, Material::diffuse("red", {0.85f, 0.2f, 0.15f}));
-  addInstance(s, "teapot", teapot, red, placeAt({0.2f, 1.0f, -1.0f}, vec3(0.8f), rotationY(-30)));
+  const int teapot_instance = addInstance(s, "teapot", teapot, red,
+                                          placeAt({0.2f, 1.0f, -1.0f}, vec3(0.8f), rotationY(-30)));
+  // The teapot turns once every 8 s on its pyramid, the box slides 1.2 along the wall and back
+  // every 6 s, and the light swings across the room and back every 10 s.
+  s.instances[size_t(teapot_instance)].animation = periodic(8.0f, [](float u) {
+    return placeAt({0.2f, 1.0f, -1.0f}, vec3(0.8f), rotationY(-30.0f + 360.0f * u));
+  });
   addBox(s, "green-box", {-2.2f, 0.4f, -0.2f}, vec3(0.4f), {0.2f, 0.7f, 0.25f}, 25.0f);
+  s.instances.back().animation = periodic(6.0f, [](float u) {
+    return placeAt({-2.2f, 0.4f, -0.2f + 0.6f * (1.0f - std::cos(2.0f * kPi * u))}, vec3(1.0f),
+                   rotationY(25.0f));
+  });
+  const vec3 light0 = s.light.direction;
+  for (int k = 0; k <= 4; ++k) {
+    const float swing = radians(70.0f) * std::sin(0.5f * kPi * float(k));  // 0, 70, 0, -70, 0
+    s.light.keys.push_back(
+        {2.5f * float(k), glm::angleAxis(swing, vec3(0, 1, 0)) * light0, s.light.color});
+  }
+  s.light.loop = true;
   addMainCamera(s, {2.4f, 2.1f, 3.4f}, {-0.6f, 1.3f, -2.0f}, 55.0f);
   // Six seconds across the room from right to left at eye height, behind the teapot and the box,
   // turning to keep the mirror in view.
@@ -286,6 +326,40 @@ Scene concaveDish() {
   return s;
 }
 
+// A rippling mirror pool: a 4 x 3 mirror grid just above a checkerboard, waves running out from
+// a point near one end (a deforming reflector), with coloured objects around its rim.
+Scene ripplePool() {
+  Scene s;
+  s.description =
+      "a rippling mirror pool on a checkerboard with objects around it: a deforming reflector "
+      "(waves from a point, 2.5 s period)";
+  addCheckerFloor(s, 16.0f);
+  int pool = addMesh(s, procedural::quad(4.0f, 3.0f, 1.0f, 96, 72));
+  int mirror = addMaterial(s, Material::mirror("water", vec3(0.04f, 0.06f, 0.08f)));
+  const int pool_instance = addInstance(s, "pool", pool, mirror, placeAt({0.0f, 0.06f, 0.0f}));
+  Deformation& ripple = s.instances[size_t(pool_instance)].deformation;
+  ripple.kind = Deformation::Kind::kRipple;
+  ripple.amplitude = 0.025f;
+  ripple.wavelength = 0.5f;
+  ripple.speed = 0.2f;
+  ripple.decay = 2.5f;
+  ripple.center = vec3(-0.9f, 0.0f, -0.4f);
+  addBox(s, "red-box", {-1.4f, 0.35f, -2.0f}, vec3(0.35f), {0.85f, 0.18f, 0.12f}, 20.0f);
+  addBox(s, "blue-box", {1.3f, 0.5f, -2.1f}, {0.3f, 0.5f, 0.3f}, {0.15f, 0.3f, 0.85f}, -15.0f);
+  int column = addMesh(s, procedural::cylinder(0.18f, 1.5f));
+  int yellow = addMaterial(s, Material::diffuse("yellow", {0.9f, 0.8f, 0.15f}));
+  addInstance(s, "column", column, yellow, placeAt({2.4f, 0.0f, -0.6f}));
+  int teapot = addMesh(s, procedural::teapotLike());
+  int purple = addMaterial(s, Material::diffuse("purple", {0.55f, 0.25f, 0.7f}));
+  addInstance(s, "teapot", teapot, purple,
+              placeAt({-2.5f, 0.0f, 0.3f}, vec3(1.0f), rotationY(60)));
+  int ball = addMesh(s, procedural::sphere(0.3f, 48, 24));
+  int green = addMaterial(s, Material::diffuse("green", {0.2f, 0.7f, 0.25f}));
+  addInstance(s, "green-ball", ball, green, placeAt({0.3f, 0.3f, -1.9f}));
+  addMainCamera(s, {0.4f, 2.2f, 4.2f}, {0.0f, 0.2f, -0.6f}, 45.0f);
+  return s;
+}
+
 }  // namespace
 
 int addMesh(Scene& scene, Mesh mesh) {
@@ -340,6 +414,7 @@ constexpr BuiltinMaker kBuiltins[] = {
     {"mirror-torus", [](const SceneOptions&) { return mirrorTorus(); }},
     {"glass", [](const SceneOptions&) { return glass(); }},
     {"concave-dish", [](const SceneOptions&) { return concaveDish(); }},
+    {"ripple-pool", [](const SceneOptions&) { return ripplePool(); }},
 };
 
 const BuiltinMaker* findBuiltin(const std::string& name) {

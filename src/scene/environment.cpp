@@ -83,7 +83,7 @@ EnvironmentMap EnvironmentMap::forScene(const Scene& scene) {
   const EnvironmentDesc& desc = scene.environment;
   EnvironmentMap env;
   if (desc.image.empty()) {
-    env = sky(scene.light, desc.cube_size > 0 ? desc.cube_size : kSkyFaceSize);
+    env = sky(scene.lightAt(0.0f), desc.cube_size > 0 ? desc.cube_size : kSkyFaceSize);
   } else {
     Image image = readImage(desc.image, Encoding::kSrgb);
     // A face a quarter of the panorama's width keeps its equatorial resolution.

@@ -74,11 +74,32 @@ Mesh box(const vec3& h, bool inward) {
   return m;
 }
 
-Mesh quad(float width, float depth, float uv_per_unit) {
+Mesh quad(float width, float depth, float uv_per_unit, int cells_x, int cells_z) {
+  if (cells_x < 1 || cells_z < 1 || cells_x > 4096 || cells_z > 4096)
+    throwInput("quad: cells {}x{} must be in 1..4096 each", cells_x, cells_z);
   Mesh m;
   float x = 0.5f * width, z = 0.5f * depth;
-  addQuad(m, {-x, 0, z}, {x, 0, z}, {x, 0, -z}, {-x, 0, -z},
-          {width * uv_per_unit, depth * uv_per_unit});
+  if (cells_x == 1 && cells_z == 1) {
+    addQuad(m, {-x, 0, z}, {x, 0, z}, {x, 0, -z}, {-x, 0, -z},
+            {width * uv_per_unit, depth * uv_per_unit});
+    finish(m, "quad");
+    return m;
+  }
+  // The same corners, orientation and uvs as the single quad, on a grid of shared vertices.
+  for (int j = 0; j <= cells_z; ++j)
+    for (int i = 0; i <= cells_x; ++i) {
+      const float u = float(i) / float(cells_x), v = float(j) / float(cells_z);
+      m.positions.push_back({-x + width * u, 0.0f, z - depth * v});
+      m.normals.push_back({0.0f, 1.0f, 0.0f});
+      m.uvs.push_back({width * uv_per_unit * u, depth * uv_per_unit * v});
+    }
+  const uint32_t row = uint32_t(cells_x + 1);
+  for (uint32_t j = 0; j < uint32_t(cells_z); ++j)
+    for (uint32_t i = 0; i < uint32_t(cells_x); ++i) {
+      const uint32_t a = j * row + i, b = a + 1, c = a + row + 1, d = a + row;
+      m.triangles.push_back({a, b, c});
+      m.triangles.push_back({a, c, d});
+    }
   finish(m, "quad");
   return m;
 }

@@ -12,8 +12,9 @@ namespace mirage::procedural {
 Mesh sphere(float radius, int segments = 96, int rings = 48);
 // An axis-aligned box centred at the origin with flat faces; `inward` turns it into a room.
 Mesh box(const vec3& half_extent, bool inward = false);
-// A quad in the XZ plane centred at the origin, normal +Y, uv = position / cell size.
-Mesh quad(float width, float depth, float uv_per_unit = 1.0f);
+// A quad in the XZ plane centred at the origin, normal +Y, uv = position / cell size, split into
+// cells_x × cells_z squares (a grid, for surfaces that deform).
+Mesh quad(float width, float depth, float uv_per_unit = 1.0f, int cells_x = 1, int cells_z = 1);
 // A capped cylinder along +Y from y = 0 to y = height.
 Mesh cylinder(float radius, float height, int segments = 48);
 // A surface of revolution about +Y through the (radius, y) profile points, bottom to top.

@@ -22,9 +22,62 @@ size_t Scene::triangleCount() const {
   return n;
 }
 
-Bounds3 Scene::instanceBounds(int instance, float time) const {
+Bounds3 Scene::localBounds(int instance) const {
   const Instance& inst = instances[size_t(instance)];
-  return meshes[size_t(inst.mesh)].bounds().transformed(inst.matrixAt(time));
+  Bounds3 local = meshes[size_t(inst.mesh)].bounds();
+  const float grow = inst.deformation.maxDisplacement();
+  if (grow > 0.0f && !local.empty()) {
+    local.lo -= vec3(grow);
+    local.hi += vec3(grow);
+  }
+  return local;
+}
+
+Bounds3 Scene::instanceBounds(int instance, float time) const {
+  return localBounds(instance).transformed(instances[size_t(instance)].matrixAt(time));
+}
+
+void Scene::meshAt(int instance, float time, Mesh& out) const {
+  const Instance& inst = instances[size_t(instance)];
+  const Mesh& rest = meshes[size_t(inst.mesh)];
+  if (inst.deforms())
+    deformMesh(rest, inst.deformation, time, out);
+  else
+    out = rest;
+}
+
+Light Light::at(float time) const {
+  Light l = *this;
+  l.keys.clear();
+  if (keys.empty()) return l;
+  const float start = keys.front().time, end = keys.back().time;
+  if (loop && end > start) {
+    time = start + std::fmod(time - start, end - start);
+    if (time < start) time += end - start;
+  }
+  auto hold = [&](const LightKey& k) {
+    l.direction = k.direction;
+    l.color = k.color;
+    return l;
+  };
+  if (keys.size() == 1 || time <= start) return hold(keys.front());
+  if (time >= end) return hold(keys.back());
+  size_t i = 1;
+  while (keys[i].time < time) ++i;
+  const LightKey &a = keys[i - 1], &b = keys[i];
+  const float u = (time - a.time) / std::max(b.time - a.time, 1e-9f);
+  // Slerp of unit vectors: a constant angular speed from one key's direction to the next.
+  const float cos_angle = std::clamp(glm::dot(a.direction, b.direction), -1.0f, 1.0f);
+  const float angle = std::acos(cos_angle);
+  if (angle < 1e-4f) {
+    l.direction = glm::normalize(glm::mix(a.direction, b.direction, u));
+  } else {
+    const float s = std::sin(angle);
+    l.direction = glm::normalize(std::sin((1.0f - u) * angle) / s * a.direction +
+                                 std::sin(u * angle) / s * b.direction);
+  }
+  l.color = glm::mix(a.color, b.color, u);
+  return l;
 }
 
 Bounds3 Scene::bounds(float time) const {
@@ -45,8 +98,9 @@ const CameraDesc& Scene::camera(const std::string& wanted) const {
 }
 
 float Scene::duration() const {
-  float d = 0.0f;
-  for (const Instance& inst : instances) d = std::max(d, inst.animation.duration());
+  float d = light.duration();
+  for (const Instance& inst : instances)
+    d = std::max({d, inst.animation.duration(), inst.deformation.period()});
   return d;
 }
 
@@ -83,6 +137,29 @@ void Scene::validate() const {
     if (inst.material < 0 || inst.material >= int(materials.size()))
       throwInput("{}: material index {} is outside 0..{}", where("instances", i, inst.name),
                  inst.material, int(materials.size()) - 1);
+    if (!inst.deforms()) continue;
+    const Deformation& d = inst.deformation;
+    if (!materials[size_t(inst.material)].isReflector())
+      throwInput("{}: deform: only reflectors deform (material '{}' is diffuse)",
+                 where("instances", i, inst.name), materials[size_t(inst.material)].name);
+    if (!(d.wavelength > 0.0f) || !std::isfinite(d.wavelength) || !std::isfinite(d.amplitude) ||
+        !std::isfinite(d.speed) || !(d.decay >= 0.0f) || !isFinite(d.center))
+      throwInput("{}: deform: needs wavelength > 0, decay >= 0 and finite values",
+                 where("instances", i, inst.name));
+    for (size_t j = 0; j < instances.size(); ++j)
+      if (j != i && instances[j].mesh == inst.mesh)
+        throwInput("{}: deform: its mesh is shared with instances[{}]; a deforming instance needs "
+                   "a mesh of its own",
+                   where("instances", i, inst.name), j);
+  }
+  for (size_t k = 0; k < light.keys.size(); ++k) {
+    const LightKey& key = light.keys[k];
+    if (k > 0 && !(key.time > light.keys[k - 1].time))
+      throwInput("{}: light.keys[{}].time = {} must be greater than the previous key's time ({})",
+                 source.empty() ? name : source, k, key.time, light.keys[k - 1].time);
+    if (!(std::abs(glm::length(key.direction) - 1.0f) < 1e-3f))
+      throwInput("{}: light.keys[{}].direction must be a unit vector",
+                 source.empty() ? name : source, k);
   }
   for (size_t i = 0; i < cameras.size(); ++i) {
     const CameraDesc& c = cameras[i];
@@ -111,6 +188,8 @@ void Scene::ensureCamera() {
 }
 
 bool isPlanarInstance(const Scene& scene, int instance, const mat4& model, vec3* normal) {
+  // A deforming surface is not flat, whatever its rest shape.
+  if (scene.instances[size_t(instance)].deforms()) return false;
   const Bounds3 b = scene.meshes[size_t(scene.instances[size_t(instance)].mesh)].bounds();
   if (b.empty()) return false;
   const vec3 e = b.extent();

@@ -10,15 +10,34 @@
 #include "core/camera.h"
 #include "core/image.h"
 #include "scene/animation.h"
+#include "scene/deformation.h"
 #include "scene/material.h"
 #include "scene/mesh.h"
 
 namespace mirage {
 
+// A key of a moving light: where it shines from and its colour at `time`.
+struct LightKey {
+  float time = 0.0f;  // seconds; strictly increasing
+  vec3 direction{0.0f, 1.0f, 0.0f};  // unit, towards the light
+  vec3 color{1.0f};
+};
+
 struct Light {
   vec3 direction = glm::normalize(vec3(0.45f, 1.0f, 0.35f));  // unit, towards the light
   vec3 color{0.95f, 0.93f, 0.88f};
   vec3 ambient{0.25f, 0.27f, 0.30f};
+  // Keyframes (a moving light), empty for a fixed one: between keys the direction turns at a
+  // constant angular speed (slerp; successive keys less than 180° apart) and the colour is
+  // interpolated linearly; before the first key the first holds, after the last the last, or the
+  // keys repeat with `loop`. The procedural sky's sun stays where the light is at time 0 (the
+  // environment is captured once; docs/scene-format.md).
+  std::vector<LightKey> keys;
+  bool loop = false;
+
+  float duration() const { return keys.empty() ? 0.0f : keys.back().time; }
+  // This light at `time`: direction and colour from the keys, no keys of its own.
+  Light at(float time) const;
 };
 
 struct EnvironmentDesc {
@@ -41,6 +60,11 @@ struct Instance {
   int material = -1;
   Transform transform;  // used when there is no animation
   Animation animation;  // keyframed transforms, overriding `transform`
+  // A procedural deformation of the mesh over time (reflectors only; the mesh is this
+  // instance's own).
+  Deformation deformation;
+
+  bool deforms() const { return deformation.active(); }
 
   mat4 matrixAt(float time) const {
     return animation.empty() ? transform.matrix() : animation.at(time).matrix();
@@ -65,12 +89,18 @@ struct Scene {
   // Instances with reflector materials, in scene order; reflector id = position + 1.
   std::vector<int> reflectorInstances() const;
   size_t triangleCount() const;
-  // World bounds of all instances at `time`.
+  // The instance's mesh at `time` into `out`: deformed when the instance deforms, else a copy.
+  void meshAt(int instance, float time, Mesh& out) const;
+  Light lightAt(float time) const { return light.at(time); }
+  // World bounds of all instances at `time` (a deforming instance's grown by its amplitude).
   Bounds3 bounds(float time = 0.0f) const;
   Bounds3 instanceBounds(int instance, float time = 0.0f) const;
+  // An instance's bounds in object space, holding every shape its deformation takes.
+  Bounds3 localBounds(int instance) const;
   // The camera with this name (empty: the first); throws InputError listing the names.
   const CameraDesc& camera(const std::string& name = "") const;
-  // Animation length in seconds (0 for a static scene).
+  // Animation length in seconds (0 for a static scene): the longest instance or light animation,
+  // or a deformation's period.
   float duration() const;
   bool animated() const { return duration() > 0.0f; }
 
@@ -80,7 +110,8 @@ struct Scene {
   void ensureCamera();
 };
 
-// The instance's mesh is flat (its thinnest bounds extent below 1e-4 of its largest): then
+// The instance's mesh is flat (its thinnest bounds extent below 1e-4 of its largest) and does
+// not deform: then
 // `normal` receives its world-space plane normal under `model`.
 bool isPlanarInstance(const Scene& scene, int instance, const mat4& model, vec3* normal = nullptr);
 // The reflector instances that are planar at time 0, in order; `not_planar` (when given)

@@ -62,16 +62,43 @@ void parseEnvironment(Context& ctx, const Field& f) {
   }
 }
 
-void parseLight(Context& ctx, const Field& f) {
-  f.allowKeys({"direction", "color", "ambient"}, "light");
-  Light& light = ctx.scene.light;
-  if (auto dir = f.optional("direction")) {
-    vec3 d = dir->vector3();
-    if (!(glm::length(d) > 1e-6f)) dir->fail("= [0, 0, 0]: the direction must not be zero");
-    light.direction = glm::normalize(d);
+vec3 lightDirection(const Field& dir) {
+  const vec3 d = dir.vector3(Range::closed(-1e6, 1e6));
+  if (!(glm::length(d) > 1e-6f)) dir.fail("= [0, 0, 0]: the direction must not be zero");
+  return glm::normalize(d);
+}
+
+// "keys": [{"time", "direction", "color"}, ...]: a moving light. A key's direction and colour
+// default to the light's own.
+void parseLightKeys(Light& light, const Field& f) {
+  std::vector<Field> items = f.items();
+  if (items.empty()) f.fail("is empty; a moving light needs at least one key");
+  for (const Field& k : items) {
+    k.allowKeys({"time", "direction", "color"}, "a light key");
+    Field time = k.required("time");
+    LightKey key;
+    key.time = time.number(Range::closed(0.0, 1e6));
+    if (!light.keys.empty() && !(key.time > light.keys.back().time))
+      time.fail("= {} must be greater than the previous key's time ({})", key.time,
+                light.keys.back().time);
+    auto dir = k.optional("direction");
+    key.direction = dir ? lightDirection(*dir) : light.direction;
+    if (!light.keys.empty() && glm::dot(key.direction, light.keys.back().direction) < -0.999f)
+      (dir ? *dir : k).fail("is opposite the previous key's direction; the light's turn between "
+                            "them is undefined (add a key in between)");
+    key.color = k.vector3Or("color", light.color, kNonNegative);
+    light.keys.push_back(key);
   }
+}
+
+void parseLight(Context& ctx, const Field& f) {
+  f.allowKeys({"direction", "color", "ambient", "keys", "loop"}, "light");
+  Light& light = ctx.scene.light;
+  if (auto dir = f.optional("direction")) light.direction = lightDirection(*dir);
   light.color = f.vector3Or("color", light.color, kNonNegative);
   light.ambient = f.vector3Or("ambient", light.ambient, kNonNegative);
+  light.loop = f.booleanOr("loop", false);
+  if (auto keys = f.optional("keys")) parseLightKeys(light, *keys);
 }
 
 struct TextureEntry {

@@ -31,10 +31,17 @@ Mesh parseProcedural(const Field& f) {
     return procedural::box(0.5f * size, f.booleanOr("inward", false));
   }
   if (type == "quad") {
-    f.allowKeys({"name", "procedural", "size", "uv_per_unit"}, "a procedural quad");
+    f.allowKeys({"name", "procedural", "size", "uv_per_unit", "cells"}, "a procedural quad");
     vec2 size(1.0f);
     if (auto s = f.optional("size")) size = s->vector2(kSize);
-    return procedural::quad(size.x, size.y, f.numberOr("uv_per_unit", 1.0f, kSize));
+    ivec2 cells(1);
+    if (auto c = f.optional("cells")) {
+      const vec2 v = c->vector2(Range::closed(1.0, 1024.0));
+      cells = ivec2(v);
+      if (vec2(cells) != v) c->fail("must hold two whole numbers in 1..1024");
+    }
+    return procedural::quad(size.x, size.y, f.numberOr("uv_per_unit", 1.0f, kSize), cells.x,
+                            cells.y);
   }
   if (type == "cylinder") {
     f.allowKeys({"name", "procedural", "radius", "height", "segments"}, "a procedural cylinder");
@@ -243,13 +250,39 @@ Animation parseAnimation(const Field& f, const Transform& base) {
   return a;
 }
 
+// "deform": {"type": "ripple", "amplitude", "wavelength", "speed", "decay", "center"}.
+Deformation parseDeformation(const Field& f) {
+  f.allowKeys({"type", "amplitude", "wavelength", "speed", "decay", "center"}, "a deformation");
+  Field type = f.required("type");
+  if (type.string() != "ripple")
+    type.fail("= {} is not a deformation (allowed: ripple)", shortQuote(type.string()));
+  Deformation d;
+  d.kind = Deformation::Kind::kRipple;
+  d.amplitude = f.numberOr("amplitude", 0.02f, Range::closed(-1e3, 1e3));
+  d.wavelength = f.numberOr("wavelength", d.wavelength, Range{0.0, 1e6, true, false});
+  d.speed = f.numberOr("speed", d.speed, Range::closed(-1e6, 1e6));
+  d.decay = f.numberOr("decay", d.decay, Range::closed(0.0, 1e6));
+  if (auto c = f.optional("center")) d.center = c->vector3(Range::closed(-1e6, 1e6));
+  return d;
+}
+
 bool needsUvs(const Material& m) {
   return m.albedo_texture >= 0 || m.checker_scale > 0.0f || m.normal_map >= 0;
 }
 
 void addInstance(Context& ctx, const Field& at, std::string name, int mesh, int material,
-                 const Transform& t, const Animation& a) {
+                 const Transform& t, const Animation& a, const Deformation& deformation) {
   Scene& s = ctx.scene;
+  if (deformation.active()) {
+    if (!s.materials[size_t(material)].isReflector())
+      at.required("deform").fail("applies to reflectors only; material {} is diffuse",
+                                 shortQuote(s.materials[size_t(material)].name));
+    // A deforming instance changes its mesh: it gets a copy of its own.
+    Mesh copy = s.meshes[size_t(mesh)];
+    copy.name += "@" + name;
+    s.meshes.push_back(std::move(copy));
+    mesh = int(s.meshes.size()) - 1;
+  }
   Mesh& m = s.meshes[size_t(mesh)];
   const Material& mat = s.materials[size_t(material)];
   if (needsUvs(mat) && m.uvs.size() != m.positions.size())
@@ -264,6 +297,7 @@ void addInstance(Context& ctx, const Field& at, std::string name, int mesh, int 
   inst.material = material;
   inst.transform = t;
   inst.animation = a;
+  inst.deformation = deformation;
   s.instances.push_back(std::move(inst));
 }
 
@@ -328,11 +362,13 @@ void parseInstances(Context& ctx, const Field& root) {
   for (size_t i = 0; i < items.size(); ++i) {
     const Field& f = items[i];
     f.allowKeys({"name", "mesh", "material", "model", "material_override", "translate", "rotate",
-                 "scale", "animation"},
+                 "scale", "animation", "deform"},
                 "an instance");
     Transform t = parseTransform(f, {});
     Animation a;
     if (auto anim = f.optional("animation")) a = parseAnimation(*anim, t);
+    Deformation deformation;
+    if (auto d = f.optional("deform")) deformation = parseDeformation(*d);
     if (auto model = f.optional("model")) {
       for (const char* key : {"mesh", "material"})
         if (auto other = f.optional(key))
@@ -357,7 +393,7 @@ void parseInstances(Context& ctx, const Field& root) {
         }
         std::string part =
             parts.size() == 1 ? name : name + "/" + ctx.scene.meshes[size_t(mesh)].name;
-        addInstance(ctx, f, part, mesh, material, t, a);
+        addInstance(ctx, f, part, mesh, material, t, a, deformation);
       }
       continue;
     }
@@ -367,7 +403,7 @@ void parseInstances(Context& ctx, const Field& root) {
     MeshEntry& entry = meshEntry(ctx, mesh_field);
     int material = lookupName(ctx.material_index, f.required("material"), "material");
     std::string name = instanceName(f, i, entry.name, names);
-    addInstance(ctx, f, name, sceneMesh(ctx, entry), material, t, a);
+    addInstance(ctx, f, name, sceneMesh(ctx, entry), material, t, a, deformation);
   }
 }
 

@@ -383,6 +383,36 @@ INSTANTIATE_TEST_SUITE_P(
                   s["light"]["direction"] = {0, 0, 0};
                 },
                 {"light.direction", "must not be zero"}},
+        BadCase{"light keys out of order",
+                [](json& s) {
+                  s["light"]["keys"] = json::parse(R"([{"time": 2}, {"time": 1}])");
+                },
+                {"light.keys[1].time = 1 must be greater", "(2)"}},
+        BadCase{"light key opposite",
+                [](json& s) {
+                  s["light"]["keys"] = json::parse(
+                      R"([{"time": 0, "direction": [0, 1, 0]},
+                          {"time": 1, "direction": [0, -1, 0]}])");
+                },
+                {"light.keys[1].direction is opposite", "add a key in between"}},
+        BadCase{"unknown deformation",
+                [](json& s) {
+                  s["instances"][1]["deform"] = {{"type", "wobble"}};
+                },
+                {"instances[1].deform.type = 'wobble'", "allowed: ripple"}},
+        BadCase{"ripple wavelength",
+                [](json& s) {
+                  s["instances"][1]["deform"] = {{"type", "ripple"}, {"wavelength", 0}};
+                },
+                {"instances[1].deform.wavelength = 0", "(0, 1000000]"}},
+        BadCase{"diffuse deforms",
+                [](json& s) {
+                  s["instances"][0]["deform"] = {{"type", "ripple"}};
+                },
+                {"instances[0].deform applies to reflectors only"}},
+        BadCase{"quad cells",
+                [](json& s) { s["meshes"][1]["cells"] = {2.5, 3}; },
+                {"meshes[1].cells", "whole numbers in 1..1024"}},
         BadCase{"cube size",
                 [](json& s) { s["environment"]["cube_size"] = 4; },
                 {"environment.cube_size = 4", "8..4096"}},

@@ -46,6 +46,36 @@ TEST(SceneJson, AnimationKeysGiveTheExpectedTransforms) {
   EXPECT_NEAR(glm::distance(at(once, 9.0f, {0, 0, 0}), vec3(4, 0, 0)), 0.0f, 1e-6f);  // last holds
 }
 
+TEST(SceneJson, MovingLightsRipplesAndGridQuadsAreRead) {
+  Scene s = parseIn(testTempDir("scene-json-tf"), R"({
+    "light": {"direction": [0, 1, 0], "color": [1, 1, 1], "loop": true,
+              "keys": [{"time": 0}, {"time": 4, "direction": [1, 0, 0], "color": [0, 0, 1]}]},
+    "materials": [{"name": "m", "type": "diffuse"}, {"name": "water", "type": "reflector"}],
+    "meshes": [{"name": "pool", "procedural": "quad", "size": [2, 1], "cells": [20, 10]}],
+    "instances": [
+      {"name": "a", "mesh": "pool", "material": "water", "translate": [0, 1, 0],
+       "deform": {"type": "ripple", "amplitude": 0.03, "wavelength": 0.4, "speed": 0.2,
+                  "decay": 1.5, "center": [0.5, 0, 0]}},
+      {"name": "b", "mesh": "pool", "material": "m"}]})");
+  ASSERT_EQ(s.light.keys.size(), 2u);
+  EXPECT_EQ(s.light.keys[0].direction, vec3(0, 1, 0));  // a key without fields is the light's own
+  EXPECT_EQ(s.light.keys[0].color, vec3(1));
+  EXPECT_NEAR(glm::dot(s.lightAt(2.0f).direction, glm::normalize(vec3(1, 1, 0))), 1.0f, 1e-5f);
+  EXPECT_NEAR(s.lightAt(6.0f).direction.y, s.lightAt(2.0f).direction.y, 1e-5f);  // loops
+  const Instance& a = s.instances[0];
+  ASSERT_TRUE(a.deforms());
+  EXPECT_EQ(a.deformation.kind, Deformation::Kind::kRipple);
+  EXPECT_FLOAT_EQ(a.deformation.amplitude, 0.03f);
+  EXPECT_FLOAT_EQ(a.deformation.wavelength, 0.4f);
+  EXPECT_FLOAT_EQ(a.deformation.decay, 1.5f);
+  EXPECT_EQ(a.deformation.center, vec3(0.5f, 0, 0));
+  EXPECT_FLOAT_EQ(s.duration(), 4.0f);  // the light's 4 s outlast the ripple's 2 s period
+  // The deforming instance got a copy of the mesh; the other keeps the original.
+  EXPECT_NE(a.mesh, s.instances[1].mesh);
+  EXPECT_EQ(s.meshes[size_t(a.mesh)].triangleCount(), 2u * 20u * 10u);
+  EXPECT_EQ(s.meshes[size_t(a.mesh)].vertexCount(), 21u * 11u);
+}
+
 TEST(SceneJson, EulerAnglesApplyXThenYThenZ) {
   Scene s = parseIn(testTempDir("scene-json-tf"), R"({
     "materials": [{"name": "m", "type": "diffuse"}],

@@ -55,13 +55,14 @@ void DepthMapCapture::allocate(int maps) {
   color_valid_.assign(size_t(count), false);
   depth_valid_.assign(size_t(count), false);
   built_for_.assign(size_t(count), DepthMapSpec{});
+  built_shape_.assign(size_t(count), 0);
   dropped_.assign(size_t(count), 0);
 }
 
 int DepthMapCapture::update(GpuScene& gpu, ScenePasses& passes,
                             const std::vector<DepthMapSpec>& specs, const FrameSettings& settings) {
   allocate(int(specs.size()));
-  const Light& light = gpu.scene().light;
+  const Light& light = gpu.light();
   int colour_captures = 0;
   for (size_t i = 0; i < specs.size(); ++i) {
     const DepthMapSpec& spec = specs[i];
@@ -71,7 +72,11 @@ int DepthMapCapture::update(GpuScene& gpu, ScenePasses& passes,
     // A normal map depends on nothing the key holds.
     const ColorKey key =
         spec.reflector ? ColorKey{} : ColorKey{local_light, light.color, light.ambient};
-    const bool depth_ok = depth_valid_[i] && sameSpec(built_for_[i], spec);
+    // A deforming object's maps are redrawn when its shape changes (a rigid motion moves their
+    // cameras with it and redraws nothing).
+    const uint64_t shape = gpu.shapeVersion(spec.instance);
+    const bool depth_ok =
+        depth_valid_[i] && sameSpec(built_for_[i], spec) && built_shape_[i] == shape;
     const bool colour_ok = depth_ok && color_valid_[i] && color_keys_[i] == key;
     if (colour_ok) continue;
     render(gpu, passes, spec, int(i), !depth_ok, settings);
@@ -81,6 +86,7 @@ int DepthMapCapture::update(GpuScene& gpu, ScenePasses& passes,
     if (!depth_ok) {
       build(int(i), depthMapView(spec, model, options_));
       built_for_[i] = spec;
+      built_shape_[i] = shape;
       depth_valid_[i] = true;
     }
   }

@@ -66,6 +66,7 @@ class DepthMapCapture {
   std::vector<ColorKey> color_keys_;
   std::vector<bool> color_valid_, depth_valid_;
   std::vector<DepthMapSpec> built_for_;
+  std::vector<uint64_t> built_shape_;  // the object's shape version at the depth map's build
   std::unique_ptr<SrdmGpuBuilder> gpu_builder_;  // null: the CPU builder
   std::vector<int> dropped_;                     // per map
   long color_captures_ = 0, depth_captures_ = 0, srdm_builds_ = 0;

@@ -22,7 +22,7 @@ std::vector<vec3> mapDirections(const vec3& towards_reflectors) {
 // Appends `count` maps of instance i, the first looking from the point `viewer` (world, time 0).
 void placeMaps(const Scene& scene, int i, const mat4& model, const vec3& viewer, int count,
                bool reflector, std::vector<DepthMapSpec>& specs) {
-  const Bounds3 local = scene.meshes[size_t(scene.instances[size_t(i)].mesh)].bounds();
+  const Bounds3 local = scene.localBounds(i);
   if (local.empty()) return;
   const vec3 world_centre = transformPoint(model, local.center());
   vec3 towards = viewer - world_centre;

@@ -44,7 +44,8 @@ float lodStride(float density, uint32_t pixels, long long kept) {
 C3rcFrame buildC3rcFrame(const Scene& scene, const std::vector<int>& reflectors,
                          const std::vector<std::vector<uint32_t>>& pixels,
                          const std::vector<mat4>& matrices, const vec3& eye,
-                         const PointStore& points, const C3rcFrameOptions& options) {
+                         const PointStore& points, const C3rcFrameOptions& options,
+                         const std::vector<const Mesh*>* meshes) {
   Stopwatch watch;
   C3rcFrame frame;
   std::vector<TriangleRef> triangles;
@@ -70,7 +71,8 @@ C3rcFrame buildC3rcFrame(const Scene& scene, const std::vector<int>& reflectors,
     const int instance = reflectors[size_t(ref.reflector)];
     const mat4& model = matrices[size_t(instance)];
     const mat3 normal_matrix = normalMatrix(model);
-    const Mesh& mesh = scene.meshes[size_t(scene.instances[size_t(instance)].mesh)];
+    const Mesh& mesh = meshes ? *(*meshes)[size_t(instance)]
+                              : scene.meshes[size_t(scene.instances[size_t(instance)].mesh)];
     const uvec3 tri = mesh.triangles[ref.triangle];
     vec3 v[3], n[3];
     for (int k = 0; k < 3; ++k) {

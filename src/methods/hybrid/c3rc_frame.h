@@ -41,10 +41,12 @@ struct C3rcFrame {
 };
 
 // `pixels[r][t]`: visible pixels of triangle t of reflector instance `reflectors[r]`;
-// `matrices`: every instance's current transform.
+// `matrices`: every instance's current transform; `meshes` (when given): every instance's
+// current mesh (a deforming reflector's shape now), else the scene's meshes.
 C3rcFrame buildC3rcFrame(const Scene& scene, const std::vector<int>& reflectors,
                          const std::vector<std::vector<uint32_t>>& pixels,
                          const std::vector<mat4>& matrices, const vec3& eye,
-                         const PointStore& points, const C3rcFrameOptions& options);
+                         const PointStore& points, const C3rcFrameOptions& options,
+                         const std::vector<const Mesh*>* meshes = nullptr);
 
 }  // namespace mirage

@@ -101,8 +101,10 @@ class HybridMethod final : public Method {
     options.eye_scaled = eye_scaled_;
     options.reach = reach(frame);
     options.cull_on_cpu = !gpu_cull_;
+    std::vector<const Mesh*> meshes(frame.gpu.scene().instances.size());
+    for (size_t i = 0; i < meshes.size(); ++i) meshes[i] = &frame.gpu.mesh(int(i));
     last_ = buildC3rcFrame(frame.gpu.scene(), reflectors_, pixels, frame.gpu.instanceMatrices(),
-                           frame.view.eye(), store_, options);
+                           frame.view.eye(), store_, options, &meshes);
     if (gpu_cull_) gpu_last_ = gpu_cull_->run(last_.c3rcs, frame.gpu.instanceMatrices(), culling_);
     splat(frame, options.reach);
 
@@ -231,8 +233,7 @@ class HybridMethod final : public Method {
     std::vector<std::vector<uint32_t>> pixels(reflectors_.size());
     for (size_t r = 0; r < reflectors_.size(); ++r) {
       slot[size_t(reflectors_[r])] = int(r);
-      const Mesh& mesh = scene.meshes[size_t(scene.instances[size_t(reflectors_[r])].mesh)];
-      pixels[r].assign(mesh.triangleCount(), 0);
+      pixels[r].assign(frame.gpu.mesh(reflectors_[r]).triangleCount(), 0);
     }
     for (const uvec2& id : ids) {
       if (id.x == 0) continue;

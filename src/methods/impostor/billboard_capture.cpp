@@ -13,7 +13,8 @@ bool sameCamera(const CameraDesc& a, const CameraDesc& b) {
 }  // namespace
 
 bool BillboardCapture::Key::operator==(const Key& o) const {
-  return sameCamera(camera, o.camera) && object == o.object && light_dir == o.light_dir &&
+  return sameCamera(camera, o.camera) && object == o.object && shape == o.shape &&
+         light_dir == o.light_dir &&
          light_color == o.light_color && ambient == o.ambient;
 }
 
@@ -28,8 +29,14 @@ BillboardCapture::BillboardCapture(int size)
 }
 
 BillboardCapture::Key BillboardCapture::keyOf(const GpuScene& gpu, const BillboardSpec& b) const {
-  const Light& light = gpu.scene().light;
-  return {b.camera, gpu.instanceMatrix(b.object), light.direction, light.color, light.ambient};
+  Key key{b.camera, gpu.instanceMatrix(b.object), gpu.shapeVersion(b.object)};
+  if (b.kind != BillboardSpec::Kind::kReflective) {
+    const Light& light = gpu.light();
+    key.light_dir = light.direction;
+    key.light_color = light.color;
+    key.ambient = light.ambient;
+  }
+  return key;
 }
 
 void BillboardCapture::allocate(const BillboardSet& set) {

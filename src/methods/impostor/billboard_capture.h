@@ -34,6 +34,8 @@ class BillboardCapture {
   struct Key {
     CameraDesc camera;
     mat4 object{0.0f};
+    uint64_t shape = 0;  // the object's shape version (deforming reflectors)
+    // The light, for diffuse billboards (a reflective one holds normals and positions only).
     vec3 light_dir{0.0f}, light_color{0.0f}, ambient{0.0f};
     bool operator==(const Key& o) const;
   };

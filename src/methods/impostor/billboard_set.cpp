@@ -81,7 +81,7 @@ BillboardSet placeBillboards(const Scene& scene, float time, const BillboardSetO
     const mat4 m = scene.instances[size_t(i)].matrixAt(time);
     vec3 n;
     isPlanarInstance(scene, i, m, &n);
-    const Bounds3 local = scene.meshes[size_t(scene.instances[size_t(i)].mesh)].bounds();
+    const Bounds3 local = scene.localBounds(i);
     const vec3 e = local.extent();
     const int thin = e.x <= e.y && e.x <= e.z ? 0 : (e.y <= e.z ? 1 : 2);
     const int a1 = (thin + 1) % 3, a2 = (thin + 2) % 3;
