@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "methods/method.h"
+#include "scene/camera_file.h"
 
 namespace mirage::app {
 
@@ -18,7 +19,10 @@ void addSceneOptions(CLI::App* app, SceneArgs& args) {
       ->required();
   app->add_option("--reflectors", args.reflectors, "spheres9: keep the first N reflectors (1..9)");
   app->add_option("--camera", args.camera, "the scene camera to use (default: the first)");
-  app->add_option("--time", args.time, "scene time in seconds (animated scenes)");
+  app->add_option("--camera-path", args.camera_path,
+                  "a camera file (one camera of the scene format: still, or a path of keys, as "
+                  "`mirage view` records them) to use instead of the scene's cameras");
+  app->add_option("--time", args.time, "scene time in seconds (animated scenes, camera paths)");
 }
 
 void addFrameOptions(CLI::App* app, FrameArgs& args) {
@@ -54,9 +58,17 @@ ivec2 parseSize(const std::string& text) {
 }
 
 Scene loadSceneFromArgs(const SceneArgs& args) {
+  if (!(args.time >= 0.0f && args.time <= 1e6f))
+    throwInput("--time {}: allowed 0..1e6 seconds", args.time);
+  if (!args.camera_path.empty() && !args.camera.empty())
+    throwInput("--camera {} and --camera-path {}: give one of them", args.camera,
+               args.camera_path);
   SceneOptions options;
   options.reflectors = args.reflectors;
-  return loadScene(args.scene, options);
+  Scene scene = loadScene(args.scene, options);
+  if (!args.camera_path.empty())
+    scene.cameras.insert(scene.cameras.begin(), loadCameraFile(args.camera_path));
+  return scene;
 }
 
 FrameSettings frameSettings(const FrameArgs& args) {

@@ -19,6 +19,7 @@ struct SceneArgs {
   std::string scene;
   int reflectors = -1;
   std::string camera;
+  std::string camera_path;  // a camera file (scene/camera_file.h), used instead of the scene's
   float time = 0.0f;
 };
 
@@ -37,6 +38,8 @@ void addMethodParamOptions(CLI::App* app, std::map<std::string, std::string>& va
 
 // "WxH" with 1 <= W, H <= 16384; throws InputError naming the option.
 ivec2 parseSize(const std::string& text);
+// The scene; with --camera-path, the file's camera becomes its first (the one every command
+// uses when --camera is not given: the two exclude each other).
 Scene loadSceneFromArgs(const SceneArgs& args);
 FrameSettings frameSettings(const FrameArgs& args);
 DisplaySettings displaySettings(const FrameArgs& args);

@@ -25,6 +25,7 @@ struct BenchArgs {
   std::string methods = "none,envmap,raytrace";
   int frames = 100;
   int warmup = 5;
+  double fps = 0.0;  // > 0: the scene plays, frame i at --time + i / fps
   double raytrace_budget_s = 20.0;
   std::string json;
   std::map<std::string, std::string> params;
@@ -56,6 +57,7 @@ struct Run {
   std::unique_ptr<gpu::FrameTimer> timer;
   int frames = 0;  // frames to time
   size_t reflector_pixels = 0;
+  std::map<std::string, double> counts;  // the sums of the timed frames' frameCounts
 };
 
 int runBench(const BenchArgs& args) {
@@ -67,10 +69,18 @@ int runBench(const BenchArgs& args) {
     throwInput("--warmup {}: allowed 0..100000", args.warmup);
   if (!(args.raytrace_budget_s > 0.0))
     throwInput("--raytrace-budget {}: must be > 0", args.raytrace_budget_s);
+  if (!(args.fps >= 0.0 && args.fps <= 1000.0))
+    throwInput("--fps {}: allowed 0..1000 (0: a still frame)", args.fps);
   std::vector<std::string> names = parseMethodList(args.methods);
   warnUnusedParams(args.params, names);
   Scene scene = loadSceneFromArgs(args.scene);
-  View view(scene.camera(args.scene.camera).at(args.scene.time), size);
+  const CameraDesc& camera = scene.camera(args.scene.camera);
+  // Timed frame f's time: still at --time, or playing at --fps (the scene and the camera's path)
+  // from the frame after the warm-up's, so that every timed frame shows a new time.
+  auto timeOf = [&](int f) {
+    return args.fps > 0.0 ? args.scene.time + float(double(f + 1) / args.fps) : args.scene.time;
+  };
+  const View view(camera.at(args.scene.time), size);
   auto context = openHeadlessContext();
   FrameRenderer renderer(scene, size);
   gpu::Clock gpu_clock = gpu::defaultClock(context->info().software);
@@ -102,12 +112,25 @@ int runBench(const BenchArgs& args) {
   size_t total = 0;
   for (const Run& r : runs) total += size_t(r.frames);
   Progress progress("bench", total);
-  for (int f = 0; f < args.frames; ++f)
+  // A playing scene moves once per frame, before the methods draw it: what every method shares
+  // (transforms, deformed vertices, the light) is timed apart from each method's update.
+  std::vector<double> scene_ms;
+  for (int f = 0; f < args.frames; ++f) {
+    const float time = timeOf(f);
+    if (args.fps > 0.0) {
+      Stopwatch watch;
+      renderer.gpu().setTime(time);
+      glFinish();
+      scene_ms.push_back(watch.ms());
+    }
+    const View frame_view = args.fps > 0.0 ? View(camera.at(time), size) : view;
     for (Run& r : runs) {
       if (f >= r.frames) continue;
-      renderer.render(*r.method, view, args.scene.time, settings, r.timer.get());
+      renderer.render(*r.method, frame_view, time, settings, r.timer.get());
+      for (const auto& [name, n] : renderer.lastFrameCounts()) r.counts[name] += n;
       progress.advance();
     }
+  }
 
   nlohmann::json methods = nlohmann::json::object();
   std::map<std::string, double> medians;
@@ -124,19 +147,26 @@ int runBench(const BenchArgs& args) {
     medians[r.name] = s.median;
     nlohmann::json e;
     e["ms"] = {{"min", s.min}, {"median", s.median}, {"p95", s.p95}};
-    nlohmann::json ms_parts;
-    for (int p = 0; p < gpu::kPartCount; ++p)
-      ms_parts[gpu::partName(gpu::Part(p))] = summarize(parts[size_t(p)]).median;
+    nlohmann::json ms_parts, ms_parts_p95;
+    for (int p = 0; p < gpu::kPartCount; ++p) {
+      const Summary part = summarize(parts[size_t(p)]);
+      ms_parts[gpu::partName(gpu::Part(p))] = part.median;
+      ms_parts_p95[gpu::partName(gpu::Part(p))] = part.p95;
+    }
     e["ms_parts"] = ms_parts;
+    e["ms_parts_p95"] = ms_parts_p95;
     e["fps"] = orNull(1000.0 / s.median);
     e["frames"] = r.frames;
     e["clock"] = gpu::clockName(r.timer->clock());
     e["reflector_pixels"] = r.reflector_pixels;
     e["reflected_rays_per_s"] = orNull(double(r.reflector_pixels) * 1000.0 / s.median);
     e["order_rendered"] = r.method->orderRendered(settings.order);
-    nlohmann::json stats = nlohmann::json::object();
+    nlohmann::json stats = nlohmann::json::object(), per_frame = nlohmann::json::object();
     for (const auto& [k, v] : r.method->stats()) stats[k] = orNull(v);
+    // The work of a timed frame (re-captures, rebuilds, warped zexels...), on average.
+    for (const auto& [k, sum] : r.counts) per_frame[k] = orNull(sum / double(r.frames));
     e["stats"] = stats;
+    e["counts_per_frame"] = per_frame;
     entries[r.name] = e;
   }
   for (Run& r : runs) {
@@ -166,6 +196,13 @@ int runBench(const BenchArgs& args) {
   j["order"] = settings.order;
   j["frames"] = args.frames;
   j["warmup"] = args.warmup;
+  j["time"] = args.scene.time;
+  j["fps"] = args.fps;
+  j["camera"] = camera.name;
+  if (args.fps > 0.0) {
+    const Summary s = summarize(scene_ms);
+    j["scene_update_ms"] = {{"min", s.min}, {"median", s.median}, {"p95", s.p95}};
+  }
   j["methods"] = methods;
   writeFileAtomic(args.json, j.dump(2) + "\n");
   return 0;
@@ -183,6 +220,11 @@ Command addBenchCommand(CLI::App& parent) {
   cmd.app->add_option("--frames", args->frames, "timed frames per method (1..1000000)")
       ->capture_default_str();
   cmd.app->add_option("--warmup", args->warmup, "untimed frames per method first (0..100000)")
+      ->capture_default_str();
+  cmd.app
+      ->add_option("--fps", args->fps,
+                   "play the scene: timed frame i at --time + (i + 1) / fps, after warm-up frames "
+                   "at --time (0..1000; 0: every frame at --time, a still scene)")
       ->capture_default_str();
   cmd.app
       ->add_option("--raytrace-budget", args->raytrace_budget_s,

@@ -34,6 +34,7 @@ void FrameRenderer::render(Method& method, const View& view, float time,
     throwRuntime("view size {}x{} differs from the frame size {}x{}", view.size().x, view.size().y,
                  target_.size().x, target_.size().y);
   FrameContext frame{*gpu_, *passes_, target_, view, settings, timer};
+  const std::map<std::string, double> before = method.stats();
   if (timer) timer->beginFrame();
   frame.beginPart(gpu::Part::kUpdate);
   gpu_->setTime(time);
@@ -45,6 +46,7 @@ void FrameRenderer::render(Method& method, const View& view, float time,
   passes_->begin(view, settings);
   method.render(frame);
   if (timer) timer->endFrame();
+  last_counts_ = frameCounts(method.info(), before, method.stats());
 }
 
 RenderedFrame FrameRenderer::read() const {

@@ -35,6 +35,8 @@ class FrameRenderer {
   // Moves the scene to `time`, updates the method and renders one frame of `view`.
   void render(Method& method, const View& view, float time, const FrameSettings& settings,
               gpu::FrameTimer* timer = nullptr);
+  // What the last render() did (methods/method.h: frameCounts).
+  const std::map<std::string, double>& lastFrameCounts() const { return last_counts_; }
   RenderedFrame read() const;
 
  private:
@@ -44,6 +46,7 @@ class FrameRenderer {
   std::unique_ptr<ScenePasses> passes_;
   FrameTarget target_;
   std::vector<std::unique_ptr<ParamValues>> param_storage_;
+  std::map<std::string, double> last_counts_;
 };
 
 }  // namespace mirage

@@ -27,7 +27,19 @@ struct MethodInfo {
   int min_order = 0;          // the lowest --order it accepts (billboards need a reflection)
   bool gpu = true;            // false: renders on the CPU (the ray tracer)
   std::vector<ParamSpec> params;
+  // Stats that count work since the method was made (captures, builds, rays): a frame's share is
+  // their growth over that frame, 0 in a frame that redid nothing.
+  std::vector<std::string> counters;
+  // Stats that describe the last frame alone (zexels warped, kd leaves kept, mirrored views).
+  std::vector<std::string> frame_stats;
 };
+
+// What a method did in one frame, from its stats before and after the frame: each counter's
+// growth and each frame stat's value, by name — the counts that show what a dynamic scene costs
+// (the viewer shows them per frame, `mirage bench` their mean per frame).
+std::map<std::string, double> frameCounts(const MethodInfo& info,
+                                          const std::map<std::string, double>& before,
+                                          const std::map<std::string, double>& after);
 
 // What a method is created with: the scene on the GPU and its validated parameters.
 struct MethodSetup {

@@ -58,6 +58,20 @@ std::vector<std::string> parseMethodList(const std::string& list) {
   return out;
 }
 
+std::map<std::string, double> frameCounts(const MethodInfo& info,
+                                          const std::map<std::string, double>& before,
+                                          const std::map<std::string, double>& after) {
+  std::map<std::string, double> out;
+  auto value = [](const std::map<std::string, double>& m, const std::string& name) {
+    auto it = m.find(name);
+    return it == m.end() ? 0.0 : it->second;
+  };
+  for (const std::string& name : info.counters) out[name] = value(after, name) - value(before, name);
+  for (const std::string& name : info.frame_stats)
+    if (after.count(name)) out[name] = value(after, name);
+  return out;
+}
+
 std::vector<ParamSpec> allMethodParams() {
   std::vector<ParamSpec> out;
   for (const MethodEntry& e : methodRegistry())

@@ -46,7 +46,24 @@ RayScene::~RayScene() {
   rtcReleaseDevice(device_);
 }
 
+bool RayScene::sameGeometryAt(float time) const {
+  if (!rtc_scene_) return false;
+  if (time == time_) return true;
+  for (size_t i = 0; i < scene_.instances.size(); ++i) {
+    const Instance& inst = scene_.instances[i];
+    if (inst.matrixAt(time) != matrices_[i]) return false;
+    if (inst.deforms() && inst.deformation.period() > 0.0f) return false;
+  }
+  return true;
+}
+
 double RayScene::build(float time) {
+  // A frame where only the light moved keeps the BVH.
+  if (sameGeometryAt(time)) {
+    light_ = scene_.lightAt(time);
+    time_ = time;
+    return 0.0;
+  }
   Stopwatch watch;
   if (rtc_scene_) rtcReleaseScene(rtc_scene_);
   rtc_scene_ = rtcNewScene(device_);

@@ -25,7 +25,9 @@ class RayScene {
   RayScene(const RayScene&) = delete;
   RayScene& operator=(const RayScene&) = delete;
 
-  // (Re)builds the BVH for the instances at `time`; returns the build time in ms.
+  // Brings the scene to `time`: rebuilds the BVH when an instance moved or a surface deformed
+  // since the last build and returns the build time in ms; returns 0 when the triangles are the
+  // same (the light may still have moved).
   double build(float time);
   float builtTime() const { return time_; }
   const mat4& instanceMatrix(int instance) const { return matrices_[size_t(instance)]; }
@@ -48,6 +50,8 @@ class RayScene {
   RTCDevice device() const { return device_; }
 
  private:
+  bool sameGeometryAt(float time) const;
+
   const Scene& scene_;
   RTCDevice device_ = nullptr;
   RTCScene rtc_scene_ = nullptr;

@@ -55,6 +55,8 @@ quat eulerDegrees(const vec3& degrees);
 mat4 fitMatrix(const Bounds3& bounds, const Fit& fit);
 
 void parseMeshes(Context& ctx, const Field& root);
+// One camera object; `index` names it when it has no name ("camera-<index + 1>").
+CameraDesc parseCamera(const Field& f, size_t index);
 void parseInstances(Context& ctx, const Field& root);
 
 }  // namespace mirage::scene_json

@@ -77,6 +77,14 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"render --scene spheres9 --method billboard --billboard-fov 0 -o x.png", "1..60"},
         BadInput{"render --scene spheres9 --method billboard --billboard-objects some -o x.png",
                  "planar"},
+        BadInput{"render --scene ripple-pool --method envmap --frames 0 -o x.png", "1..100000"},
+        BadInput{"render --scene ripple-pool --method envmap --frames 3 --fps 0 -o x.png",
+                 "(0, 1000]"},
+        BadInput{"render --scene ripple-pool --method envmap -o x.mp4", "--frames 2 or more"},
+        BadInput{"render --scene ripple-pool --method envmap --time -1 -o x.png", "0..1e6"},
+        BadInput{"render --scene ripple-pool --method envmap --camera-path /no/such.json -o x.png",
+                 "/no/such.json"},
+        BadInput{"bench --scene ripple-pool --fps -2 --json b.json", "0..1000"},
         BadInput{"frobnicate", "frobnicate"}));
 
 TEST(Cli, HelpExitsZero) {

@@ -44,6 +44,7 @@ MethodEntry billboardMethodEntry() {
       "billboard impostors: diffuse and reflective billboards to order K (impostor paper, §3)";
   entry.info.min_order = 1;
   entry.info.params = billboardStageParams();
+  entry.info.counters = {"billboard_captures", "environment_captures"};
   entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
     return std::make_unique<BillboardMethod>(setup);
   };

@@ -156,6 +156,7 @@ class EnvmapMethod final : public Method {
 MethodEntry envmapMethodEntry() {
   MethodEntry entry;
   entry.info.name = "envmap";
+  entry.info.counters = {"cube_captures", "capture_passes"};
   entry.info.description =
       "a cube map captured at each reflector's centre, looked up by direction (reflection probe)";
   entry.info.params = {ParamSpec::integer("envmap-size", 8, 2048, 256,
@@ -169,6 +170,7 @@ MethodEntry envmapMethodEntry() {
 MethodEntry envmapBoxMethodEntry() {
   MethodEntry entry;
   entry.info.name = "envmap-box";
+  entry.info.counters = {"cube_captures", "capture_passes"};
   entry.info.description =
       "the reflection probes looked up through a box proxy of the room (parallax-corrected cube "
       "map)";

@@ -74,12 +74,16 @@ class HybridMethod final : public Method {
   const MethodInfo& info() const override { return info_; }
 
   void update(FrameContext& frame) override {
-    if (captured_ && captured_version_ == frame.gpu.version() &&
-        captured_mip_ == frame.settings.mip)
-      return;
+    // The background probes show the objects without points, the reflectors and the light: a
+    // point-sampled object that moves changes none of them (its tree lives in object space, and
+    // the query moves instead).
+    std::vector<uint64_t> key = {frame.gpu.lightVersion()};
+    for (const std::vector<int>* list : {&background_, &reflectors_})
+      for (int i : *list) key.push_back(frame.gpu.instanceVersion(i));
+    if (captured_ && captured_key_ == key && captured_mip_ == frame.settings.mip) return;
     captureBackground(frame);
     captured_ = true;
-    captured_version_ = frame.gpu.version();
+    captured_key_ = std::move(key);
     captured_mip_ = frame.settings.mip;
   }
 
@@ -120,6 +124,7 @@ class HybridMethod final : public Method {
   std::map<std::string, double> stats() const override {
     std::map<std::string, double> s;
     s["points"] = double(store_.pointCount());
+    s["background_captures"] = double(captures_);
     s["point_sets"] = double(store_.clouds().size());
     s["point_sample_ms"] = store_.sampleMs();
     s["kd_build_ms"] = store_.buildMs();
@@ -191,7 +196,12 @@ class HybridMethod final : public Method {
       probes_ = gpu::Texture::createCubeArray(GL_RGBA16F, probe_size_,
                                               std::max<int>(1, int(reflectors_.size())), levels);
     if (!cube_) cube_ = std::make_unique<CubeCapture>(probe_size_);
-    const float radius = std::max(frame.gpu.scene().bounds(frame.gpu.time()).radius(), 1e-3f);
+    // Near and far from the bounds of what the probes show, so that the capture depends on
+    // nothing else (a point-sampled object that moves leaves it exactly as it was).
+    Bounds3 shown;
+    for (const std::vector<int>* list : {&background_, &reflectors_})
+      for (int i : *list) shown.extend(frame.gpu.instanceBounds(i));
+    const float radius = std::max(shown.empty() ? 1.0f : shown.radius(), 1e-3f);
     for (size_t r = 0; r < reflectors_.size(); ++r) {
       const int instance = reflectors_[r];
       const vec3 centre = frame.gpu.instanceBounds(instance).center();
@@ -322,7 +332,7 @@ class HybridMethod final : public Method {
   std::unique_ptr<KdGpuCull> gpu_cull_;  // --hybrid-cull-on gpu
   KdGpuCullResult gpu_last_;
   bool captured_ = false, captured_mip_ = false;
-  uint64_t captured_version_ = 0;
+  std::vector<uint64_t> captured_key_;
   long captures_ = 0;
   double visibility_ms_ = 0.0, splat_ms_ = 0.0;
 };
@@ -336,6 +346,9 @@ MethodEntry hybridMethodEntry() {
       "point samples in kd-trees projected through a continuous 3-ray camera per reflector "
       "triangle and splatted, over a cube map of the rest (hybrid backward-forward paper)";
   entry.info.max_order = 1;
+  entry.info.counters = {"background_captures"};
+  entry.info.frame_stats = {"c3rcs",           "cull_leaves_kept",   "cull_hull_rejects",
+                            "cull_exact_rejects", "points_projected", "splats_written"};
   entry.info.params = {
       ParamSpec::integer(
           "points", 0, 4000000, 0,

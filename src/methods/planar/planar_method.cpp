@@ -107,6 +107,7 @@ class PlanarMethod final : public Method {
 MethodEntry planarMethodEntry() {
   MethodEntry entry;
   entry.info.name = "planar";
+  entry.info.frame_stats = {"mirrored_views"};
   entry.info.description =
       "exact planar mirrors by re-rendering the scene from the mirrored eye, the mirror plane as "
       "an oblique near plane, recursing to the reflection order (forward-mapped mirrors paper's "

@@ -62,6 +62,7 @@ class RaytraceMethod final : public Method {
 MethodEntry raytraceMethodEntry() {
   MethodEntry entry;
   entry.info.name = "raytrace";
+  entry.info.counters = {"bvh_builds", "primary_rays", "reflected_rays"};
   entry.info.description = "ground truth: Embree traces the full meshes, recursively to order K";
   entry.info.gpu = false;
   entry.info.params = {ParamSpec::integer("spp", 1, 4096, 1,

@@ -196,6 +196,8 @@ MethodEntry zexelMethodEntry() {
       "the mirrored eye each frame and splatted, on the GPU or the CPU (forward-mapped planar "
       "mirror paper); non-planar reflectors inverse-warp a cube map of colour and distance";
   entry.info.max_order = 1;
+  entry.info.counters = {"zexel_captures", "zexel_cube_captures"};
+  entry.info.frame_stats = {"zexels_warped", "exposed_fraction"};
   entry.info.params = {
       ParamSpec::integer("zexel-size", 16, 65536, 512,
                          "side of each depth-preserving reflection map, in zexels (at most the "
