@@ -22,7 +22,8 @@ void addSceneOptions(CLI::App* app, SceneArgs& args) {
   app->add_option("--camera-path", args.camera_path,
                   "a camera file (one camera of the scene format: still, or a path of keys, as "
                   "`mirage view` records them) to use instead of the scene's cameras");
-  app->add_option("--time", args.time, "scene time in seconds (animated scenes, camera paths)");
+  args.time_option =
+      app->add_option("--time", args.time, "scene time in seconds (animated scenes, camera paths)");
 }
 
 void addFrameOptions(CLI::App* app, FrameArgs& args) {
@@ -57,7 +58,7 @@ ivec2 parseSize(const std::string& text) {
   return {w, h};
 }
 
-Scene loadSceneFromArgs(const SceneArgs& args) {
+Scene loadSceneFromArgs(SceneArgs& args) {
   if (!(args.time >= 0.0f && args.time <= 1e6f))
     throwInput("--time {}: allowed 0..1e6 seconds", args.time);
   if (!args.camera_path.empty() && !args.camera.empty())
@@ -66,8 +67,11 @@ Scene loadSceneFromArgs(const SceneArgs& args) {
   SceneOptions options;
   options.reflectors = args.reflectors;
   Scene scene = loadScene(args.scene, options);
-  if (!args.camera_path.empty())
-    scene.cameras.insert(scene.cameras.begin(), loadCameraFile(args.camera_path));
+  if (!args.camera_path.empty()) {
+    const CameraFile file = loadCameraFile(args.camera_path);
+    scene.cameras.insert(scene.cameras.begin(), file.camera);
+    if (file.time && !(args.time_option && args.time_option->count() > 0)) args.time = *file.time;
+  }
   return scene;
 }
 

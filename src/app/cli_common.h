@@ -21,6 +21,7 @@ struct SceneArgs {
   std::string camera;
   std::string camera_path;  // a camera file (scene/camera_file.h), used instead of the scene's
   float time = 0.0f;
+  CLI::Option* time_option = nullptr;  // to tell a given --time from the default
 };
 
 struct FrameArgs {
@@ -39,8 +40,9 @@ void addMethodParamOptions(CLI::App* app, std::map<std::string, std::string>& va
 // "WxH" with 1 <= W, H <= 16384; throws InputError naming the option.
 ivec2 parseSize(const std::string& text);
 // The scene; with --camera-path, the file's camera becomes its first (the one every command
-// uses when --camera is not given: the two exclude each other).
-Scene loadSceneFromArgs(const SceneArgs& args);
+// uses when --camera is not given: the two exclude each other), and the file's time (a
+// screenshot's) becomes args.time unless --time was given.
+Scene loadSceneFromArgs(SceneArgs& args);
 FrameSettings frameSettings(const FrameArgs& args);
 DisplaySettings displaySettings(const FrameArgs& args);
 std::unique_ptr<gpu::Context> openHeadlessContext();

@@ -60,7 +60,7 @@ struct Run {
   std::map<std::string, double> counts;  // the sums of the timed frames' frameCounts
 };
 
-int runBench(const BenchArgs& args) {
+int runBench(BenchArgs& args) {
   ivec2 size = parseSize(args.frame.size);
   FrameSettings settings = frameSettings(args.frame);
   if (args.frames < 1 || args.frames > 1000000)

@@ -96,7 +96,7 @@ const CameraDesc& pathCamera(const Scene& scene, const CompareArgs& args) {
   return camera;
 }
 
-int runCompare(const CompareArgs& args) {
+int runCompare(CompareArgs& args) {
   CompareRun run;
   run.size = parseSize(args.frame.size);
   run.settings = frameSettings(args.frame);

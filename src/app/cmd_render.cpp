@@ -49,7 +49,7 @@ class TempFolder {
   fs::path path_;
 };
 
-int runRender(const RenderArgs& args) {
+int runRender(RenderArgs& args) {
   ivec2 size = parseSize(args.frame.size);
   FrameSettings settings = frameSettings(args.frame);
   DisplaySettings display = displaySettings(args.frame);

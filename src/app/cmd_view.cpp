@@ -1,7 +1,12 @@
 // `mirage view`: the interactive viewer (viewer/viewer.h).
+#include <filesystem>
+
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "core/error.h"
+#include "scene/builtin_scenes.h"
+#include "scene/camera_file.h"
+#include "viewer/input.h"
 #include "viewer/viewer.h"
 
 namespace mirage::app {
@@ -14,11 +19,24 @@ struct ViewArgs {
   std::string method = "envmap";
   int frames = 0;
   std::string screenshot;
+  bool screenshot_panel = false;
+  std::string screenshot_dir;
   bool no_vsync = false;
+  bool pause = false;
+  std::string events, record_events, record_path, play_path, report;
+  std::string truth = "off";
+  bool heatmap = false;
+  int truth_divisor = 2;
   std::map<std::string, std::string> params;
 };
 
-int runView(const ViewArgs& args) {
+TruthMode parseTruthMode(const std::string& text) {
+  for (TruthMode m : {TruthMode::kOff, TruthMode::kSplit, TruthMode::kFlip})
+    if (text == truthModeName(m)) return m;
+  throwInput("--truth {}: allowed off|split|flip", text);
+}
+
+int runView(ViewArgs& args) {
   ViewerOptions o;
   o.size = parseSize(args.frame.size);
   o.settings = frameSettings(args.frame);
@@ -28,15 +46,47 @@ int runView(const ViewArgs& args) {
     throwInput("--frames {}: allowed 0..1000000 (0: until the window is closed)", args.frames);
   if (!args.screenshot.empty() && args.frames == 0)
     throwInput("--screenshot {}: needs --frames N (the frame to write)", args.screenshot);
+  if (!args.screenshot.empty() && !args.screenshot.ends_with(".png") &&
+      !args.screenshot.ends_with(".exr"))
+    throwInput("--screenshot {}: must end in .png or .exr", args.screenshot);
+  if (args.truth_divisor < 1 || args.truth_divisor > 8)
+    throwInput("--truth-resolution {}: allowed 1..8 (the reference at 1/n of the frame's size)",
+               args.truth_divisor);
+  o.output.truth = parseTruthMode(args.truth);
+  o.output.heatmap = args.heatmap;
   warnUnusedParams(args.params, methodNames());
   Scene scene = loadSceneFromArgs(args.scene);
+  // Files are read before a window opens: a bad one is exit 2 with its name, display or not.
+  if (!args.events.empty()) o.events = loadEventScript(args.events);
+  o.camera_index = 0;
+  for (size_t i = 0; i < scene.cameras.size(); ++i)
+    if (scene.cameras[i].name == args.scene.camera) o.camera_index = int(i);
   o.camera = scene.camera(args.scene.camera).at(args.scene.time);
   o.time = args.scene.time;
+  o.play = scene.animated() && !args.pause;
   o.method = args.method;
   o.params = args.params;
   o.frames = args.frames;
   o.screenshot = args.screenshot;
+  o.screenshot_panel = args.screenshot_panel;
+  o.screenshot_dir = args.screenshot_dir;
+  if (o.screenshot_dir.empty() && !isBuiltinScene(args.scene.scene)) {
+    // Next to the scene file (or the mesh) when there is one.
+    const std::filesystem::path file(args.scene.scene);
+    if (std::filesystem::exists(file)) o.screenshot_dir = file.parent_path().string();
+  }
+  if (!o.screenshot_dir.empty()) ensureDirectory(o.screenshot_dir);
   o.vsync = !args.no_vsync;
+  o.record_events = args.record_events;
+  o.record_path = args.record_path;
+  if (!args.play_path.empty()) {
+    o.play_path = loadCameraFile(args.play_path).camera;
+    if (o.play_path->path.empty())
+      throwInput("--play-path {}: the camera has no path (it needs \"path\" keys)",
+                 args.play_path);
+  }
+  o.report = args.report;
+  o.truth_divisor = args.truth_divisor;
   return runViewer(scene, o);
 }
 
@@ -46,14 +96,42 @@ Command addViewCommand(CLI::App& parent) {
   auto args = std::make_shared<ViewArgs>();
   Command cmd;
   cmd.app = parent.add_subcommand(
-      "view", "the interactive viewer: any method, an orbit camera, live method and order");
+      "view",
+      "the interactive viewer: any method, live parameters, fly/orbit camera, scene time, the "
+      "ray-traced ground truth beside the frame");
   addSceneOptions(cmd.app, args->scene);
   cmd.app->add_option("--method", args->method, "the method shown first")->capture_default_str();
   addFrameOptions(cmd.app, args->frame);
+  cmd.app->add_flag("--pause", args->pause, "start with the scene's time stopped");
   cmd.app->add_option("--frames", args->frames,
-                      "render this many frames, then exit (0..1000000; 0: until closed)");
+                      "render this many frames (1/60 s steps), then exit (0..1000000; 0: until "
+                      "the window is closed)");
   cmd.app->add_option("--screenshot", args->screenshot,
-                      "with --frames: write the last frame here (.png display, .exr linear)");
+                      "with --frames: write the last frame here (.png as shown, .exr linear) and "
+                      "its camera beside it (<name>.camera.json)");
+  cmd.app->add_flag("--screenshot-panel", args->screenshot_panel,
+                    "the --screenshot .png with the panel drawn over it");
+  cmd.app->add_option("--screenshot-dir", args->screenshot_dir,
+                      "where F12 writes screenshots and P camera paths (default: next to the "
+                      "scene file, or the current folder)");
+  cmd.app->add_option("--events", args->events,
+                      "an event script (keys, buttons, cursor, wheel by frame) to replay");
+  cmd.app->add_option("--record-events", args->record_events,
+                      "write the window's input here as an event script at exit");
+  cmd.app->add_option("--record-path", args->record_path,
+                      "record the camera from the start into this camera file (written at exit "
+                      "or when P stops the recording)");
+  cmd.app->add_option("--play-path", args->play_path,
+                      "play this camera file's path from the start (L plays it again)");
+  cmd.app->add_option("--report", args->report,
+                      "at exit, write a JSON report: frame times, GL object counts at the first "
+                      "and last frame, the camera, the reference's PSNR");
+  cmd.app->add_option("--truth", args->truth, "the ground truth at the start: off|split|flip")
+      ->capture_default_str();
+  cmd.app->add_flag("--heatmap", args->heatmap, "start with the error heat map on");
+  cmd.app->add_option("--truth-resolution", args->truth_divisor,
+                      "the reference's resolution, 1/n of the frame's (1..8)")
+      ->capture_default_str();
   cmd.app->add_flag("--no-vsync", args->no_vsync, "render as fast as possible");
   addMethodParamOptions(cmd.app, args->params);
   cmd.run = [args] { return runView(*args); };

@@ -18,7 +18,7 @@ Progress::Progress(std::string label, size_t total)
       total_(std::max<size_t>(total, 1)),
       start_(std::chrono::steady_clock::now()),
       last_draw_(start_),
-      active_(enabled()) {}
+      active_(enabled() && total > 0) {}
 
 Progress::~Progress() {
   if (active_) draw(done_.load(), true);

@@ -12,6 +12,7 @@ namespace mirage {
 
 class Progress {
  public:
+  // `total` 0: no bar (work too small or running in the background).
   Progress(std::string label, size_t total);
   ~Progress();
   Progress(const Progress&) = delete;

@@ -1,17 +1,36 @@
-// Move-only ownership of one OpenGL object name; Traits::destroy deletes it.
+// Move-only ownership of one OpenGL object name; Traits::destroy deletes it. Every handle of a
+// kind is counted while it lives (single GL thread), so that tests can prove that making and
+// dropping methods leaks nothing (gpu/object_count.h counts what GL itself holds as well).
 #pragma once
 
+#include <algorithm>
 #include <utility>
 
 #include "gpu/gl.h"
 
 namespace mirage::gpu {
 
+// The largest object name any handle has held: how far gpu/object_count.h probes.
+inline GLuint& largestHandleName() {
+  static GLuint largest = 0;
+  return largest;
+}
+
 template <typename Traits>
 class Handle {
  public:
   Handle() = default;
-  explicit Handle(GLuint id) : id_(id) {}
+  explicit Handle(GLuint id) : id_(id) {
+    if (id_) {
+      ++live();
+      largestHandleName() = std::max(largestHandleName(), id_);
+    }
+  }
+  // Handles of this kind alive now.
+  static long& live() {
+    static long count = 0;
+    return count;
+  }
   ~Handle() { reset(); }
   Handle(Handle&& other) noexcept : id_(std::exchange(other.id_, 0)) {}
   Handle& operator=(Handle&& other) noexcept {
@@ -27,7 +46,10 @@ class Handle {
   GLuint id() const { return id_; }
   explicit operator bool() const { return id_ != 0; }
   void reset() {
-    if (id_) Traits::destroy(id_);
+    if (id_) {
+      Traits::destroy(id_);
+      --live();
+    }
     id_ = 0;
   }
 

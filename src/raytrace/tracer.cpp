@@ -171,7 +171,7 @@ void RayTracer::renderTiles(const View& view, const TraceSettings& settings,
       if (offset(s) == vec2(0.5f)) centre_sample = s;
   constexpr int kTile = 16;
   const int tiles_x = (size.x + kTile - 1) / kTile, tiles_y = (size.y + kTile - 1) / kTile;
-  Progress progress("raytrace", size_t(tiles_x) * size_t(tiles_y));
+  Progress progress("raytrace", settings.progress ? size_t(tiles_x) * size_t(tiles_y) : 0);
   tbb::combinable<double> direct_cpu, reflect_cpu;
   std::atomic<uint64_t> primary_total{0}, reflected_total{0};
   Stopwatch wall;
@@ -188,6 +188,7 @@ void RayTracer::renderTiles(const View& view, const TraceSettings& settings,
     std::vector<RayHit> hits;
     for (int ty = range.rows().begin(); ty != range.rows().end(); ++ty)
       for (int tx = range.cols().begin(); tx != range.cols().end(); ++tx) {
+        if (settings.cancel && settings.cancel->load(std::memory_order_relaxed)) return;
         Stopwatch phase;
         pending.clear();
         uint64_t primary = 0, reflected = 0;

@@ -18,6 +18,10 @@ namespace mirage {
 struct TraceSettings {
   int order = 2;  // reflection order K: reflectors reached after K bounces show their base colour
   int spp = 1;    // samples per pixel (stratified, box filter); 1 = the pixel centre
+  // When set and true, the remaining tiles are skipped (the image is then incomplete): the
+  // viewer's background reference stops this way when the camera moves.
+  const std::atomic<bool>* cancel = nullptr;
+  bool progress = true;  // a progress bar on a terminal (background renders draw none)
 };
 
 struct TraceStats {

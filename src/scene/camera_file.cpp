@@ -15,20 +15,28 @@ Json vectorJson(const vec3& v) {
 
 }  // namespace
 
-CameraDesc parseCameraFile(const std::string& file, const std::string& text) {
-  const Json doc = scene_json::parseDocument(file, text);
-  return scene_json::parseCamera(scene_json::Field(file, doc, ""), 0);
+CameraFile parseCameraFile(const std::string& file, const std::string& text) {
+  Json doc = scene_json::parseDocument(file, text);
+  CameraFile out;
+  if (doc.contains("time")) {
+    const Json time = doc["time"];
+    out.time = scene_json::Field(file, time, "time").number(scene_json::Range::closed(0.0, 1e6));
+    doc.erase("time");  // the rest is a camera of the scene format
+  }
+  out.camera = scene_json::parseCamera(scene_json::Field(file, doc, ""), 0);
+  return out;
 }
 
-CameraDesc loadCameraFile(const std::string& path) {
+CameraFile loadCameraFile(const std::string& path) {
   return parseCameraFile(path, readFile(path));
 }
 
-std::string cameraFileText(const CameraDesc& c) {
+std::string cameraFileText(const CameraDesc& c, std::optional<float> time) {
   // nlohmann writes a double in the fewest digits that read back to it; a float widened to
   // double reads back to the same float.
   Json j;
   j["name"] = c.name;
+  if (time) j["time"] = *time;
   j["up"] = vectorJson(c.up);
   j["fov_y"] = c.fov_y_degrees;
   j["near"] = c.near_plane;
@@ -46,8 +54,8 @@ std::string cameraFileText(const CameraDesc& c) {
   return j.dump(1) + "\n";
 }
 
-void saveCameraFile(const std::string& path, const CameraDesc& camera) {
-  writeFileAtomic(path, cameraFileText(camera));
+void saveCameraFile(const std::string& path, const CameraDesc& camera, std::optional<float> time) {
+  writeFileAtomic(path, cameraFileText(camera, time));
 }
 
 }  // namespace mirage

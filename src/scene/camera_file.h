@@ -4,19 +4,28 @@
 // read them.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "core/camera.h"
 
 namespace mirage {
 
+struct CameraFile {
+  CameraDesc camera;
+  // "time": the scene time a screenshot was taken at; commands take it as their --time when none
+  // is given, so that the file reproduces the shot.
+  std::optional<float> time;
+};
+
 // Reads and checks a camera file; throws InputError naming the file and the field.
-CameraDesc loadCameraFile(const std::string& path);
+CameraFile loadCameraFile(const std::string& path);
 // The camera parsed from `text` (`file` names it in messages).
-CameraDesc parseCameraFile(const std::string& file, const std::string& text);
+CameraFile parseCameraFile(const std::string& file, const std::string& text);
 // The file's text for `camera`: every float written so that it reads back to the same float.
-std::string cameraFileText(const CameraDesc& camera);
+std::string cameraFileText(const CameraDesc& camera, std::optional<float> time = std::nullopt);
 // Writes `camera` to `path` atomically.
-void saveCameraFile(const std::string& path, const CameraDesc& camera);
+void saveCameraFile(const std::string& path, const CameraDesc& camera,
+                    std::optional<float> time = std::nullopt);
 
 }  // namespace mirage

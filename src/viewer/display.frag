@@ -1,16 +1,37 @@
 // The viewer's output pass: a frame's linear radiance through the display transform of
 // shading/tonemap.h (exposure, tone map, sRGB) — the very function `mirage render` applies to
-// its PNGs — into the window.
+// its PNGs — into the window; with a reference, the ray-traced image right of a split line (all
+// of the frame to flip to it, none of it for the method alone) and, with u_heatmap, the method's
+// error against it as the reports' heat map (shading/heatmap.h) where the method shows.
+#include "shading/heatmap.h"
 #include "shading/tonemap.h"
 
 layout(binding = 0) uniform sampler2D u_frame;
+layout(binding = 1) uniform sampler2D u_truth;  // the reference, at its own (reduced) size
 
 uniform float u_exposure;
 uniform int u_tonemap;
+uniform int u_has_truth;
+uniform float u_split;  // the reference shows right of this many pixels from the left
+uniform int u_line;     // draw the split line
+uniform int u_heatmap;  // the error instead of the method's frame where the method shows
+uniform float u_heat_max;
+uniform vec2 u_size;
 
 layout(location = 0) out vec4 out_color;
 
 void main() {
-  vec3 linear = texelFetch(u_frame, ivec2(gl_FragCoord.xy), 0).rgb;
-  out_color = vec4(display_transform(linear, u_exposure, u_tonemap), 1.0f);
+  const vec3 method = display_transform(texelFetch(u_frame, ivec2(gl_FragCoord.xy), 0).rgb,
+                                        u_exposure, u_tonemap);
+  if (u_has_truth == 0) {
+    out_color = vec4(method, 1.0f);
+    return;
+  }
+  const vec3 truth =
+      display_transform(texture(u_truth, gl_FragCoord.xy / u_size).rgb, u_exposure, u_tonemap);
+  vec3 c = gl_FragCoord.x >= u_split ? truth : method;
+  if (gl_FragCoord.x < u_split && u_heatmap != 0)
+    c = magma(display_error(method, truth) / u_heat_max);
+  if (u_line != 0 && abs(gl_FragCoord.x - u_split) < 1.0f) c = vec3(1.0f);
+  out_color = vec4(c, 1.0f);
 }

@@ -1,4 +1,4 @@
-#include "viewer/orbit_camera.h"
+#include "viewer/viewer_camera.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,21 +10,23 @@ constexpr float kRadiansPerPixel = 0.005f;
 constexpr float kPitchLimit = 1.55f;  // just short of straight up or down
 }  // namespace
 
-void OrbitCamera::reset(const CameraDesc& start) {
+void ViewerCamera::reset(const CameraDesc& start) {
   base_ = start;
+  base_.path = {};
   target_ = start.target;
   const vec3 offset = start.position - start.target;
   distance_ = std::max(glm::length(offset), 1e-4f);
   yaw_ = std::atan2(offset.x, offset.z);
-  pitch_ = std::asin(std::clamp(offset.y / distance_, -1.0f, 1.0f));
+  pitch_ = std::clamp(std::asin(std::clamp(offset.y / distance_, -1.0f, 1.0f)), -kPitchLimit,
+                      kPitchLimit);
 }
 
-void OrbitCamera::orbit(vec2 delta) {
+void ViewerCamera::orbit(vec2 delta) {
   yaw_ -= delta.x * kRadiansPerPixel;
   pitch_ = std::clamp(pitch_ + delta.y * kRadiansPerPixel, -kPitchLimit, kPitchLimit);
 }
 
-void OrbitCamera::pan(vec2 delta, float height) {
+void ViewerCamera::pan(vec2 delta, float height) {
   const CameraDesc d = desc();
   const vec3 forward = glm::normalize(d.target - d.position);
   const vec3 right = glm::normalize(glm::cross(forward, vec3(0.0f, 1.0f, 0.0f)));
@@ -35,13 +37,27 @@ void OrbitCamera::pan(vec2 delta, float height) {
   target_ += (-delta.x * right + delta.y * up) * per_pixel;
 }
 
-void OrbitCamera::dolly(float steps) {
+void ViewerCamera::dolly(float steps) {
   distance_ = std::max(distance_ * std::pow(0.9f, steps), 1e-3f);
 }
 
-CameraDesc OrbitCamera::desc() const {
+void ViewerCamera::fly(vec3 direction, float speed, float seconds) {
+  const CameraDesc d = desc();
+  const vec3 forward = glm::normalize(d.target - d.position);
+  const vec3 right = glm::normalize(glm::cross(forward, vec3(0.0f, 1.0f, 0.0f)));
+  target_ += (direction.x * right + direction.y * vec3(0.0f, 1.0f, 0.0f) + direction.z * forward) *
+             (speed * seconds);
+}
+
+void ViewerCamera::frame(const Bounds3& bounds) {
+  if (bounds.empty()) return;
+  target_ = bounds.center();
+  const float radius = std::max(bounds.radius(), 1e-3f);
+  distance_ = 1.1f * radius / std::sin(glm::radians(base_.fov_y_degrees) * 0.5f);
+}
+
+CameraDesc ViewerCamera::desc() const {
   CameraDesc d = base_;
-  d.path = {};
   d.target = target_;
   d.position = target_ + distance_ * vec3(std::cos(pitch_) * std::sin(yaw_), std::sin(pitch_),
                                           std::cos(pitch_) * std::cos(yaw_));
