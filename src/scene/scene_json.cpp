@@ -75,12 +75,9 @@ void parseLightKeys(Light& light, const Field& f) {
   if (items.empty()) f.fail("is empty; a moving light needs at least one key");
   for (const Field& k : items) {
     k.allowKeys({"time", "direction", "color"}, "a light key");
-    Field time = k.required("time");
     LightKey key;
-    key.time = time.number(Range::closed(0.0, 1e6));
-    if (!light.keys.empty() && !(key.time > light.keys.back().time))
-      time.fail("= {} must be greater than the previous key's time ({})", key.time,
-                light.keys.back().time);
+    key.time = keyTime(k, light.keys.empty() ? std::nullopt
+                                             : std::optional<float>(light.keys.back().time));
     auto dir = k.optional("direction");
     key.direction = dir ? lightDirection(*dir) : light.direction;
     if (!light.keys.empty() && glm::dot(key.direction, light.keys.back().direction) < -0.999f)
@@ -198,6 +195,14 @@ void collectAssetReferences(const Json& v, std::vector<std::string>& out) {
 }
 
 }  // namespace
+
+float keyTime(const Field& key, std::optional<float> previous) {
+  Field time = key.required("time");
+  const float t = time.number(Range::closed(0.0, 1e6));
+  if (previous && !(t > *previous))
+    time.fail("= {} must be greater than the previous key's time ({})", t, *previous);
+  return t;
+}
 
 std::string resolvePath(const Context& ctx, const Field& field) {
   std::string text = field.string();

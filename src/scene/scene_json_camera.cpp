@@ -23,12 +23,9 @@ CameraPath parseCameraPath(const Field& f, const vec3& up) {
   CameraPath path;
   for (const Field& k : items) {
     k.allowKeys({"time", "position", "target"}, "a camera path key");
-    Field time = k.required("time");
     CameraKey key;
-    key.time = time.number(Range::closed(0.0, 1e6));
-    if (!path.keys.empty() && !(key.time > path.keys.back().time))
-      time.fail("= {} must be greater than the previous key's time ({})", key.time,
-                path.keys.back().time);
+    key.time = keyTime(k, path.keys.empty() ? std::nullopt
+                                            : std::optional<float>(path.keys.back().time));
     key.position = k.required("position").vector3(Range::closed(-1e6, 1e6));
     Field target = k.required("target");
     key.target = target.vector3(Range::closed(-1e6, 1e6));

@@ -55,6 +55,9 @@ quat eulerDegrees(const vec3& degrees);
 mat4 fitMatrix(const Bounds3& bounds, const Fit& fit);
 
 void parseMeshes(Context& ctx, const Field& root);
+// A key's "time" (seconds in [0, 1e6]) after `previous`, the time of the key before it (none for
+// the first): keys of animations, light keys and camera paths go in strictly increasing time.
+float keyTime(const Field& key, std::optional<float> previous);
 // One camera object; `index` names it when it has no name ("camera-<index + 1>").
 CameraDesc parseCamera(const Field& f, size_t index);
 void parseInstances(Context& ctx, const Field& root);

@@ -237,12 +237,9 @@ Animation parseAnimation(const Field& f, const Transform& base) {
   if (items.empty()) keys.fail("is empty; an animation needs at least one key");
   for (const Field& k : items) {
     k.allowKeys({"time", "translate", "rotate", "scale"}, "an animation key");
-    Field time = k.required("time");
     Keyframe key;
-    key.time = time.number(Range::atLeast(0.0));
-    if (!a.keys.empty() && !(key.time > a.keys.back().time))
-      time.fail("= {} must be greater than the previous key's time ({})", key.time,
-                a.keys.back().time);
+    key.time =
+        keyTime(k, a.keys.empty() ? std::nullopt : std::optional<float>(a.keys.back().time));
     // Fields a key leaves out keep the instance's own translate/rotate/scale.
     key.transform = parseTransform(k, base);
     a.keys.push_back(key);

@@ -100,8 +100,13 @@ std::vector<ScriptedEvent> parseEventScript(const std::string& file, const std::
       e.event.type = InputEvent::Type::kScroll;
       e.event.position = {f.numberOr("x", 0.0f, Range::closed(-1e3, 1e3)),
                           f.numberOr("y", 0.0f, Range::closed(-1e3, 1e3))};
+    } else if (kind == "resize") {
+      f.allowKeys({"frame", "type", "width", "height"}, "a resize event");
+      e.event.type = InputEvent::Type::kResize;
+      e.event.position = {float(f.required("width").integer(16, 16384)),
+                          float(f.required("height").integer(16, 16384))};
     } else {
-      type.fail("= {} is not an event type (key, button, move, scroll)",
+      type.fail("= {} is not an event type (key, button, move, scroll, resize)",
                 scene_json::shortQuote(kind));
     }
     out.push_back(e);
@@ -128,6 +133,11 @@ std::string eventScriptText(const std::vector<ScriptedEvent>& events) {
         j["type"] = "button";
         j["button"] = kButtons[std::clamp(e.code, 0, 2)];
         j["down"] = e.down;
+        break;
+      case InputEvent::Type::kResize:
+        j["type"] = "resize";
+        j["width"] = int(e.position.x);
+        j["height"] = int(e.position.y);
         break;
       case InputEvent::Type::kMove:
       case InputEvent::Type::kScroll:

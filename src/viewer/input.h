@@ -5,8 +5,10 @@
 //   {"events": [{"frame": 3, "type": "move", "x": 200, "y": 150},
 //               {"frame": 3, "type": "button", "button": "left", "down": true},
 //               {"frame": 5, "type": "key", "key": "W", "down": true},
-//               {"frame": 9, "type": "scroll", "y": 2}]}
-// with positions in window units from the top-left corner, keys by name (A..Z, 0..9, F1..F12,
+//               {"frame": 9, "type": "scroll", "y": 2},
+//               {"frame": 12, "type": "resize", "width": 640, "height": 400}]}
+// (a resize asks the window for that size, as a user dragging its border) with positions in
+// window units from the top-left corner, keys by name (A..Z, 0..9, F1..F12,
 // SPACE, ESCAPE, ENTER, TAB, LEFT_SHIFT, RIGHT_SHIFT, LEFT_CONTROL) and frames counted from 0.
 #pragma once
 
@@ -18,11 +20,11 @@
 namespace mirage {
 
 struct InputEvent {
-  enum class Type { kKey, kButton, kMove, kScroll };
+  enum class Type { kKey, kButton, kMove, kScroll, kResize };
   Type type = Type::kMove;
   int code = 0;       // kKey: a GLFW key code; kButton: 0 left, 1 right, 2 middle
   bool down = false;  // kKey, kButton: pressed (true) or released
-  vec2 position{0.0f};  // kMove: the cursor; kScroll: the wheel's offsets
+  vec2 position{0.0f};  // kMove: the cursor; kScroll: the wheel's offsets; kResize: the size
 };
 
 struct ScriptedEvent {

@@ -67,6 +67,9 @@ void ViewerApp::handle(const InputEvent& e, bool scripted) {
       camera_.dolly(e.position.y);
       recorder_.stopPlaying();
       break;
+    case InputEvent::Type::kResize:
+      glfwSetWindowSize(window_.window(), int(e.position.x), int(e.position.y));
+      break;
     case InputEvent::Type::kKey:
       if (!e.down) {
         keys_down_.erase(e.code);

@@ -182,6 +182,40 @@ TEST(ViewUnderXvfb, SwitchingMethodsLeaksNoGlObjects) {
   EXPECT_LE(j["gl_objects"]["last_frame"]["total"].get<int>(), first + 1);
 }
 
+// F12 writes the frame as shown and its camera into --screenshot-dir (numbered, never over an
+// earlier shot), and a resize re-makes the frame at the window's new size.
+TEST(ViewUnderXvfb, F12WritesShotsAndResizingRendersAtTheNewSize) {
+  MIRAGE_NEED_DISPLAY();
+  const auto dir = testTempDir("view-f12");
+  writeText(dir / "events.json", R"({"events": [
+    {"frame": 2, "type": "key", "key": "F12", "down": true},
+    {"frame": 3, "type": "key", "key": "F12", "down": false},
+    {"frame": 4, "type": "resize", "width": 200, "height": 150},
+    {"frame": 8, "type": "key", "key": "F12", "down": true},
+    {"frame": 8, "type": "key", "key": "F12", "down": false}]})");
+  const std::string common = " --scene sphere-over-checker --order 1 --method envmap";
+  const CliResult v = runMirage("view" + common + " --size 320x240 --frames 10 --events " +
+                                (dir / "events.json").string() + " --screenshot-dir " +
+                                (dir / "shots").string() + " --report " +
+                                (dir / "report.json").string());
+  ASSERT_EQ(v.code, 0) << v.output;
+  const fs::path first = dir / "shots" / "sphere-over-checker-envmap-1.png";
+  const fs::path second = dir / "shots" / "sphere-over-checker-envmap-2.png";
+  ASSERT_TRUE(fs::exists(first)) << v.output;
+  ASSERT_TRUE(fs::exists(second)) << v.output;
+  EXPECT_EQ(readImage(first.string()).width(), 320);
+  const Image small = readImage(second.string());
+  EXPECT_EQ(small.width(), 200);
+  EXPECT_EQ(small.height(), 150);
+  EXPECT_EQ(readJson(dir / "report.json")["size"], nlohmann::json::array({200, 150}));
+  // Each shot is `render`'s frame of its camera file at its size.
+  const CliResult r = runMirage("render" + common + " --size 200x150 --camera-path " +
+                                (dir / "shots" / "sphere-over-checker-envmap-2.camera.json").string() +
+                                " -o " + (dir / "r.png").string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_GT(psnrOf(second, dir / "r.png"), 45.0);
+}
+
 // The split shows the method left of the line and the reference right of it: with the reference
 // at full resolution, the halves are `render`'s frames of the method and of the ray tracer at 4
 // samples; the PSNR the viewer reports is compare's.
