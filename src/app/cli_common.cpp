@@ -62,8 +62,7 @@ Scene loadSceneFromArgs(SceneArgs& args) {
   if (!(args.time >= 0.0f && args.time <= 1e6f))
     throwInput("--time {}: allowed 0..1e6 seconds", args.time);
   if (!args.camera_path.empty() && !args.camera.empty())
-    throwInput("--camera {} and --camera-path {}: give one of them", args.camera,
-               args.camera_path);
+    throwInput("--camera {} and --camera-path {}: give one of them", args.camera, args.camera_path);
   SceneOptions options;
   options.reflectors = args.reflectors;
   Scene scene = loadScene(args.scene, options);

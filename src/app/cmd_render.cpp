@@ -63,15 +63,15 @@ int runRender(RenderArgs& args) {
   if (ext != ".png" && ext != ".exr" && !mp4)
     throwInput("-o {}: the output must end in .png, .exr{}", args.output,
                args.frames > 1 ? " or .mp4 (frames through ffmpeg)" : "");
-  if (mp4 && args.frames < 2)
-    throwInput("-o {}: an MP4 needs --frames 2 or more", args.output);
+  if (mp4 && args.frames < 2) throwInput("-o {}: an MP4 needs --frames 2 or more", args.output);
   std::string ffmpeg;
   if (mp4) {
     ffmpeg = findFfmpeg();
     if (ffmpeg.empty())
-      throwInput("-o {}: ffmpeg was not found on PATH; install it (apt-get install ffmpeg) or "
-                 "write PNG frames (-o frames.png)",
-                 args.output);
+      throwInput(
+          "-o {}: ffmpeg was not found on PATH; install it (apt-get install ffmpeg) or "
+          "write PNG frames (-o frames.png)",
+          args.output);
   }
   warnUnusedParams(args.params, {args.method});
   Scene scene = loadSceneFromArgs(args.scene);
@@ -97,8 +97,7 @@ int runRender(RenderArgs& args) {
                frame.color, display);
     progress.advance();
   }
-  if (mp4)
-    encodeMp4(ffmpeg, framePattern(frame_name, args.frames), args.fps, args.output);
+  if (mp4) encodeMp4(ffmpeg, framePattern(frame_name, args.frames), args.fps, args.output);
   int order = method->orderRendered(settings.order);
   const std::string order_text =
       fmt::format("order {}{}", order,
@@ -126,12 +125,14 @@ Command addRenderCommand(CLI::App& parent) {
   cmd.app->add_option("--method", args->method, "the method (see `mirage compare --help`)")
       ->required();
   addFrameOptions(cmd.app, args->frame);
-  cmd.app->add_option("-o,--output", args->output,
-                      "output image: .png (display) or .exr (linear); with --frames N > 1 frame "
-                      "i goes to <name>_<i>.<ext>, or all of them into one .mp4 (needs ffmpeg)")
+  cmd.app
+      ->add_option("-o,--output", args->output,
+                   "output image: .png (display) or .exr (linear); with --frames N > 1 frame "
+                   "i goes to <name>_<i>.<ext>, or all of them into one .mp4 (needs ffmpeg)")
       ->required();
-  cmd.app->add_option("--frames", args->frames,
-                      "render N frames (1..100000), frame i at --time + i / --fps")
+  cmd.app
+      ->add_option("--frames", args->frames,
+                   "render N frames (1..100000), frame i at --time + i / --fps")
       ->capture_default_str();
   cmd.app->add_option("--fps", args->fps, "frames per second of a sequence (0..1000]")
       ->capture_default_str();

@@ -82,8 +82,7 @@ int runView(ViewArgs& args) {
   if (!args.play_path.empty()) {
     o.play_path = loadCameraFile(args.play_path).camera;
     if (o.play_path->path.empty())
-      throwInput("--play-path {}: the camera has no path (it needs \"path\" keys)",
-                 args.play_path);
+      throwInput("--play-path {}: the camera has no path (it needs \"path\" keys)", args.play_path);
   }
   o.report = args.report;
   o.truth_divisor = args.truth_divisor;
@@ -129,8 +128,9 @@ Command addViewCommand(CLI::App& parent) {
   cmd.app->add_option("--truth", args->truth, "the ground truth at the start: off|split|flip")
       ->capture_default_str();
   cmd.app->add_flag("--heatmap", args->heatmap, "start with the error heat map on");
-  cmd.app->add_option("--truth-resolution", args->truth_divisor,
-                      "the reference's resolution, 1/n of the frame's (1..8)")
+  cmd.app
+      ->add_option("--truth-resolution", args->truth_divisor,
+                   "the reference's resolution, 1/n of the frame's (1..8)")
       ->capture_default_str();
   cmd.app->add_flag("--no-vsync", args->no_vsync, "render as fast as possible");
   addMethodParamOptions(cmd.app, args->params);

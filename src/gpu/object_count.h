@@ -8,8 +8,8 @@
 namespace mirage::gpu {
 
 struct ObjectCounts {
-  long buffers = 0, textures = 0, framebuffers = 0, vertex_arrays = 0, programs = 0,
-       shaders = 0, queries = 0;
+  long buffers = 0, textures = 0, framebuffers = 0, vertex_arrays = 0, programs = 0, shaders = 0,
+       queries = 0;
 
   long total() const {
     return buffers + textures + framebuffers + vertex_arrays + programs + shaders + queries;

@@ -66,7 +66,8 @@ std::map<std::string, double> frameCounts(const MethodInfo& info,
     auto it = m.find(name);
     return it == m.end() ? 0.0 : it->second;
   };
-  for (const std::string& name : info.counters) out[name] = value(after, name) - value(before, name);
+  for (const std::string& name : info.counters)
+    out[name] = value(after, name) - value(before, name);
   for (const std::string& name : info.frame_stats)
     if (after.count(name)) out[name] = value(after, name);
   return out;

@@ -98,8 +98,8 @@ Scene spheres9(const SceneOptions& options) {
   for (int row = 2; row >= 0 && n < count; --row)
     for (int col = 0; col < 3 && n < count; ++col, ++n) {
       const vec3 rest(2.2f * float(col - 1), 0.7f, 2.2f * float(row - 1));
-      const int sphere_instance = addInstance(s, fmt::format("mirror-sphere-{}", n + 1), sphere,
-                                              mirror, placeAt(rest));
+      const int sphere_instance =
+          addInstance(s, fmt::format("mirror-sphere-{}", n + 1), sphere, mirror, placeAt(rest));
       // Every sphere bobs up to 0.5 above its rest place and back, each with its own period
       // (2 to 3.6 s), so that their reflections of one another change from frame to frame.
       const float period = 2.0f + 0.2f * float(n);
@@ -351,8 +351,7 @@ Scene ripplePool() {
   addInstance(s, "column", column, yellow, placeAt({2.4f, 0.0f, -0.6f}));
   int teapot = addMesh(s, procedural::teapotLike());
   int purple = addMaterial(s, Material::diffuse("purple", {0.55f, 0.25f, 0.7f}));
-  addInstance(s, "teapot", teapot, purple,
-              placeAt({-2.5f, 0.0f, 0.3f}, vec3(1.0f), rotationY(60)));
+  addInstance(s, "teapot", teapot, purple, placeAt({-2.5f, 0.0f, 0.3f}, vec3(1.0f), rotationY(60)));
   int ball = addMesh(s, procedural::sphere(0.3f, 48, 24));
   int green = addMaterial(s, Material::diffuse("green", {0.2f, 0.7f, 0.25f}));
   addInstance(s, "green-ball", ball, green, placeAt({0.3f, 0.3f, -1.9f}));

@@ -47,8 +47,9 @@ std::string cameraFileText(const CameraDesc& c, std::optional<float> time) {
   } else {
     Json keys = Json::array();
     for (const CameraKey& k : c.path.keys)
-      keys.push_back(
-          {{"time", k.time}, {"position", vectorJson(k.position)}, {"target", vectorJson(k.target)}});
+      keys.push_back({{"time", k.time},
+                      {"position", vectorJson(k.position)},
+                      {"target", vectorJson(k.target)}});
     j["path"] = std::move(keys);
   }
   return j.dump(1) + "\n";

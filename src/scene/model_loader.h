@@ -30,10 +30,10 @@ struct LoadLimits {
 // A model file's content. Formats without materials (PLY, STL) give no materials and
 // mesh_material = -1 for every mesh.
 struct LoadedModel {
-  std::vector<Mesh> meshes;           // with normals (computed if the file has none)
-  std::vector<int> mesh_material;     // per mesh: index into `materials`, or -1
-  std::vector<mat4> mesh_transform;   // per mesh: node transform of the file's scene graph
-  std::vector<Material> materials;    // texture indices refer to `textures`
+  std::vector<Mesh> meshes;          // with normals (computed if the file has none)
+  std::vector<int> mesh_material;    // per mesh: index into `materials`, or -1
+  std::vector<mat4> mesh_transform;  // per mesh: node transform of the file's scene graph
+  std::vector<Material> materials;   // texture indices refer to `textures`
   std::vector<TextureImage> textures;
 };
 

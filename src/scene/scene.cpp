@@ -148,9 +148,10 @@ void Scene::validate() const {
                  where("instances", i, inst.name));
     for (size_t j = 0; j < instances.size(); ++j)
       if (j != i && instances[j].mesh == inst.mesh)
-        throwInput("{}: deform: its mesh is shared with instances[{}]; a deforming instance needs "
-                   "a mesh of its own",
-                   where("instances", i, inst.name), j);
+        throwInput(
+            "{}: deform: its mesh is shared with instances[{}]; a deforming instance needs "
+            "a mesh of its own",
+            where("instances", i, inst.name), j);
   }
   for (size_t k = 0; k < light.keys.size(); ++k) {
     const LightKey& key = light.keys[k];

@@ -18,7 +18,7 @@ namespace mirage {
 
 // A key of a moving light: where it shines from and its colour at `time`.
 struct LightKey {
-  float time = 0.0f;  // seconds; strictly increasing
+  float time = 0.0f;                 // seconds; strictly increasing
   vec3 direction{0.0f, 1.0f, 0.0f};  // unit, towards the light
   vec3 color{1.0f};
 };

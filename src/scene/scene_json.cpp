@@ -76,13 +76,15 @@ void parseLightKeys(Light& light, const Field& f) {
   for (const Field& k : items) {
     k.allowKeys({"time", "direction", "color"}, "a light key");
     LightKey key;
-    key.time = keyTime(k, light.keys.empty() ? std::nullopt
-                                             : std::optional<float>(light.keys.back().time));
+    key.time = keyTime(
+        k, light.keys.empty() ? std::nullopt : std::optional<float>(light.keys.back().time));
     auto dir = k.optional("direction");
     key.direction = dir ? lightDirection(*dir) : light.direction;
     if (!light.keys.empty() && glm::dot(key.direction, light.keys.back().direction) < -0.999f)
-      (dir ? *dir : k).fail("is opposite the previous key's direction; the light's turn between "
-                            "them is undefined (add a key in between)");
+      (dir ? *dir : k)
+          .fail(
+              "is opposite the previous key's direction; the light's turn between "
+              "them is undefined (add a key in between)");
     key.color = k.vector3Or("color", light.color, kNonNegative);
     light.keys.push_back(key);
   }
@@ -176,7 +178,6 @@ Material parseMaterial(Context& ctx, const Field& f, std::vector<TextureEntry>& 
   }
   return m;
 }
-
 
 // Every file field ("file", "image") whose value starts with assets:, depth first. The recursion
 // is safe: parseDocument bounds the depth.

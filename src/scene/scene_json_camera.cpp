@@ -24,8 +24,8 @@ CameraPath parseCameraPath(const Field& f, const vec3& up) {
   for (const Field& k : items) {
     k.allowKeys({"time", "position", "target"}, "a camera path key");
     CameraKey key;
-    key.time = keyTime(k, path.keys.empty() ? std::nullopt
-                                            : std::optional<float>(path.keys.back().time));
+    key.time =
+        keyTime(k, path.keys.empty() ? std::nullopt : std::optional<float>(path.keys.back().time));
     key.position = k.required("position").vector3(Range::closed(-1e6, 1e6));
     Field target = k.required("target");
     key.target = target.vector3(Range::closed(-1e6, 1e6));

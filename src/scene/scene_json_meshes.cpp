@@ -238,8 +238,7 @@ Animation parseAnimation(const Field& f, const Transform& base) {
   for (const Field& k : items) {
     k.allowKeys({"time", "translate", "rotate", "scale"}, "an animation key");
     Keyframe key;
-    key.time =
-        keyTime(k, a.keys.empty() ? std::nullopt : std::optional<float>(a.keys.back().time));
+    key.time = keyTime(k, a.keys.empty() ? std::nullopt : std::optional<float>(a.keys.back().time));
     // Fields a key leaves out keep the instance's own translate/rotate/scale.
     key.transform = parseTransform(k, base);
     a.keys.push_back(key);

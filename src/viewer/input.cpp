@@ -23,9 +23,12 @@ struct NamedKey {
   int code;
 };
 constexpr NamedKey kNamedKeys[] = {
-    {"SPACE", GLFW_KEY_SPACE},           {"ESCAPE", GLFW_KEY_ESCAPE},
-    {"ENTER", GLFW_KEY_ENTER},           {"TAB", GLFW_KEY_TAB},
-    {"LEFT_SHIFT", GLFW_KEY_LEFT_SHIFT}, {"RIGHT_SHIFT", GLFW_KEY_RIGHT_SHIFT},
+    {"SPACE", GLFW_KEY_SPACE},
+    {"ESCAPE", GLFW_KEY_ESCAPE},
+    {"ENTER", GLFW_KEY_ENTER},
+    {"TAB", GLFW_KEY_TAB},
+    {"LEFT_SHIFT", GLFW_KEY_LEFT_SHIFT},
+    {"RIGHT_SHIFT", GLFW_KEY_RIGHT_SHIFT},
     {"LEFT_CONTROL", GLFW_KEY_LEFT_CONTROL},
 };
 
@@ -47,9 +50,12 @@ int keyCode(const std::string& name) {
 }
 
 std::string keyName(int code) {
-  if (code >= GLFW_KEY_A && code <= GLFW_KEY_Z) return std::string(1, char('A' + code - GLFW_KEY_A));
-  if (code >= GLFW_KEY_0 && code <= GLFW_KEY_9) return std::string(1, char('0' + code - GLFW_KEY_0));
-  if (code >= GLFW_KEY_F1 && code <= GLFW_KEY_F12) return fmt::format("F{}", code - GLFW_KEY_F1 + 1);
+  if (code >= GLFW_KEY_A && code <= GLFW_KEY_Z)
+    return std::string(1, char('A' + code - GLFW_KEY_A));
+  if (code >= GLFW_KEY_0 && code <= GLFW_KEY_9)
+    return std::string(1, char('0' + code - GLFW_KEY_0));
+  if (code >= GLFW_KEY_F1 && code <= GLFW_KEY_F12)
+    return fmt::format("F{}", code - GLFW_KEY_F1 + 1);
   for (const NamedKey& k : kNamedKeys)
     if (code == k.code) return k.name;
   return "";
@@ -75,9 +81,10 @@ std::vector<ScriptedEvent> parseEventScript(const std::string& file, const std::
       e.event.type = InputEvent::Type::kKey;
       e.event.code = keyCode(key.string());
       if (e.event.code < 0)
-        key.fail("= {} is not a key name (A..Z, 0..9, F1..F12, SPACE, ESCAPE, ENTER, TAB, "
-                 "LEFT_SHIFT, RIGHT_SHIFT, LEFT_CONTROL)",
-                 scene_json::shortQuote(key.string()));
+        key.fail(
+            "= {} is not a key name (A..Z, 0..9, F1..F12, SPACE, ESCAPE, ENTER, TAB, "
+            "LEFT_SHIFT, RIGHT_SHIFT, LEFT_CONTROL)",
+            scene_json::shortQuote(key.string()));
       e.event.down = f.required("down").boolean();
     } else if (kind == "button") {
       f.allowKeys({"frame", "type", "button", "down"}, "a button event");

@@ -22,8 +22,8 @@ namespace mirage {
 struct InputEvent {
   enum class Type { kKey, kButton, kMove, kScroll, kResize };
   Type type = Type::kMove;
-  int code = 0;       // kKey: a GLFW key code; kButton: 0 left, 1 right, 2 middle
-  bool down = false;  // kKey, kButton: pressed (true) or released
+  int code = 0;         // kKey: a GLFW key code; kButton: 0 left, 1 right, 2 middle
+  bool down = false;    // kKey, kButton: pressed (true) or released
   vec2 position{0.0f};  // kMove: the cursor; kScroll: the wheel's offsets; kResize: the size
 };
 

@@ -22,8 +22,8 @@ namespace mirage {
 
 struct TruthRequest {
   CameraDesc camera;
-  ivec2 size{1};     // the viewer's frame size
-  int divisor = 2;   // the reference's resolution is size / divisor
+  ivec2 size{1};    // the viewer's frame size
+  int divisor = 2;  // the reference's resolution is size / divisor
   float time = 0.0f;
   int order = 1;
 

@@ -30,17 +30,17 @@ struct ViewerOptions {
   DisplaySettings display;
   ivec2 size{720, 512};
   bool vsync = true;
-  int frames = 0;          // 0: until the window is closed
-  std::string screenshot;  // with `frames`: the last frame, .png as shown, .exr linear
-  bool screenshot_panel = false;  // the .png with the panel over it (for documentation)
-  std::string screenshot_dir;  // where F12 writes (PNG + camera file)
+  int frames = 0;                     // 0: until the window is closed
+  std::string screenshot;             // with `frames`: the last frame, .png as shown, .exr linear
+  bool screenshot_panel = false;      // the .png with the panel over it (for documentation)
+  std::string screenshot_dir;         // where F12 writes (PNG + camera file)
   std::vector<ScriptedEvent> events;  // an event script to replay (--events)
-  std::string record_events;   // the window's events are written here at exit
-  std::string record_path;     // a camera path is recorded from the start, written here at exit
+  std::string record_events;          // the window's events are written here at exit
+  std::string record_path;  // a camera path is recorded from the start, written here at exit
   std::optional<CameraDesc> play_path;  // a camera path played from the start (--play-path)
-  std::string report;          // at exit: JSON with frame times, GL object counts, the camera
-  OutputSettings output;       // the ground truth's mode, heat map, split
-  int truth_divisor = 2;       // the reference's resolution: the frame's / this (1..8)
+  std::string report;     // at exit: JSON with frame times, GL object counts, the camera
+  OutputSettings output;  // the ground truth's mode, heat map, split
+  int truth_divisor = 2;  // the reference's resolution: the frame's / this (1..8)
 };
 
 // Throws InputError without a display (exit 2) and NoOpenGLError without OpenGL 4.5.

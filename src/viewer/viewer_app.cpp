@@ -107,8 +107,9 @@ int ViewerApp::run() {
     glfwPollEvents();
     const auto now = Clock::now();
     // A set number of frames steps 1/60 s each, so that a script replays the same everywhere.
-    const double seconds =
-        scripted_run ? 1.0 / 60.0 : std::min(std::chrono::duration<double>(now - last).count(), 0.25);
+    const double wall = std::chrono::duration<double>(now - last).count();
+    const double seconds = scripted_run ? 1.0 / 60.0 : std::min(wall, 0.25);
+    if (frame_ > 1) loop_ms_.push_back(1000.0 * wall);  // the whole last frame, panel and swap
     last = now;
     handleEvents(frame_);
     applyRequests();
@@ -177,8 +178,8 @@ bool ViewerApp::ensureStage(ivec2 size) {
     renderer_ = std::make_unique<FrameRenderer>(scene_, size);
     if (!truth_) {
       const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
-      truth_ = std::make_unique<TruthRenderer>(scene_, renderer_->environment(),
-                                               std::max(1, cores - 1));
+      truth_ =
+          std::make_unique<TruthRenderer>(scene_, renderer_->environment(), std::max(1, cores - 1));
     }
   }
   if (method_ && !state_.method_changed) return true;
@@ -209,7 +210,8 @@ void ViewerApp::renderFrame(ivec2 size) {
   } catch (const InputError& e) {
     // A setting the method refuses at render time (an order below its minimum): back to 1.
     state_.message = e.what();
-    state_.settings.order = std::max(state_.settings.order, findMethod(method_name_).info.min_order);
+    state_.settings.order =
+        std::max(state_.settings.order, findMethod(method_name_).info.min_order);
     state_.method_changed = true;
     return;
   }
@@ -252,8 +254,8 @@ void ViewerApp::updateTruth(ivec2 size, bool last_frame) {
   truth_->request(request);
   // A scripted run's last frame waits for the finished reference, so that what it writes does
   // not depend on the machine's speed.
-  while (last_frame && !(truth_image_.request == request &&
-                         truth_image_.level == TruthRequest::kLevels - 1)) {
+  while (last_frame &&
+         !(truth_image_.request == request && truth_image_.level == TruthRequest::kLevels - 1)) {
     if (!truth_->failure().empty()) break;
     if (!truth_->takeNewer(truth_image_))
       std::this_thread::sleep_for(std::chrono::milliseconds(2));
@@ -270,8 +272,8 @@ void ViewerApp::updateTruth(ivec2 size, bool last_frame) {
   if (current && (fresh || frame_ % 30 == 0 || last_frame))
     state_.psnr = truthPsnr(renderer_->read(), truth_image_, options_.display);
   if (!current) state_.psnr = std::nan("");
-  const ivec2 s = truth_image_.level >= 0 ? truth_image_.request.levelSize(truth_image_.level)
-                                          : ivec2(0);
+  const ivec2 s =
+      truth_image_.level >= 0 ? truth_image_.request.levelSize(truth_image_.level) : ivec2(0);
   const int working = truth_->working();
   state_.truth_status =
       truth_image_.level < 0

@@ -89,7 +89,7 @@ class ViewerApp {
   int frame_ = 0;
 
   // Figures for --report.
-  std::vector<double> frame_ms_, update_ms_, render_ms_;
+  std::vector<double> frame_ms_, update_ms_, render_ms_, loop_ms_;
   std::vector<std::string> methods_shown_;
   gpu::ObjectCounts handles_first_, handles_last_, objects_first_, objects_last_;
   // At the end of each frame that showed a newly made method: the method and the objects.

@@ -4,8 +4,8 @@
 #include <filesystem>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
+#include <nlohmann/json.hpp>
 
 #include "core/atomic_file.h"
 #include "scene/camera_file.h"
@@ -40,9 +40,10 @@ nlohmann::json summary(std::vector<double> v) {
 }
 
 nlohmann::json countsJson(const gpu::ObjectCounts& c) {
-  return {{"buffers", c.buffers},       {"textures", c.textures}, {"framebuffers", c.framebuffers},
-          {"vertex_arrays", c.vertex_arrays}, {"programs", c.programs}, {"shaders", c.shaders},
-          {"queries", c.queries},       {"total", c.total()}};
+  return {{"buffers", c.buffers},           {"textures", c.textures},
+          {"framebuffers", c.framebuffers}, {"vertex_arrays", c.vertex_arrays},
+          {"programs", c.programs},         {"shaders", c.shaders},
+          {"queries", c.queries},           {"total", c.total()}};
 }
 
 }  // namespace
@@ -129,6 +130,7 @@ void ViewerApp::writeReport() const {
   j["frame_ms"] = summary(frame_ms_);
   j["update_ms"] = summary(update_ms_);
   j["render_ms"] = summary(render_ms_);
+  j["loop_ms"] = summary(loop_ms_);  // frame to frame: the method's frame, output, panel, swap
   j["counts_last_frame"] = state_.readout.counts;
   j["gl_handles"] = {{"first_frame", countsJson(handles_first_)},
                      {"last_frame", countsJson(handles_last_)}};

@@ -152,7 +152,8 @@ void ViewerApp::moveCamera(double seconds) {
     if (direction != vec3(0.0f)) {
       const bool fast = held(GLFW_KEY_LEFT_SHIFT) + held(GLFW_KEY_RIGHT_SHIFT) > 0.0f;
       // Half the scene's size a second; four times that with shift.
-      const float speed = 0.5f * std::max(scene_.bounds(0.0f).radius(), 1e-3f) * (fast ? 4.0f : 1.0f);
+      const float speed =
+          0.5f * std::max(scene_.bounds(0.0f).radius(), 1e-3f) * (fast ? 4.0f : 1.0f);
       camera_.fly(direction, speed, float(seconds));
     }
   }

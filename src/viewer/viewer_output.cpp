@@ -9,15 +9,20 @@ namespace mirage {
 
 const char* truthModeName(TruthMode mode) {
   switch (mode) {
-    case TruthMode::kOff: return "off";
-    case TruthMode::kSplit: return "split";
-    case TruthMode::kFlip: return "flip";
+    case TruthMode::kOff:
+      return "off";
+    case TruthMode::kSplit:
+      return "split";
+    case TruthMode::kFlip:
+      return "flip";
   }
   return "off";
 }
 
 ViewerOutput::ViewerOutput()
-    : program_(gpu::Program::graphics("render/shaders/fullscreen.vert", "viewer/display.frag")),
+    : plain_(gpu::Program::graphics("render/shaders/fullscreen.vert", "viewer/display.frag")),
+      with_truth_(gpu::Program::graphics("render/shaders/fullscreen.vert", "viewer/display.frag",
+                                         {"VIEWER_TRUTH 1"})),
       vao_(gpu::createVertexArray()) {}
 
 void ViewerOutput::setTruth(const TruthImage& truth) {
@@ -42,15 +47,17 @@ void ViewerOutput::draw(const gpu::Texture& frame, ivec2 size, const OutputSetti
   float split = float(size.x) + 1.0f;  // the method everywhere
   if (s.truth == TruthMode::kSplit) split = s.split * float(size.x);
   if (s.truth == TruthMode::kFlip) split = -1.0f;  // the reference everywhere
-  program_.set("u_exposure", s.display.exposure);
-  program_.set("u_tonemap", int(s.display.tonemap));
-  program_.set("u_has_truth", truth ? 1 : 0);
-  program_.set("u_split", split);
-  program_.set("u_line", s.truth == TruthMode::kSplit ? 1 : 0);
-  program_.set("u_heatmap", s.heatmap ? 1 : 0);
-  program_.set("u_heat_max", std::max(s.heat_max, 1e-4f));
-  program_.set("u_size", vec2(size));
-  program_.use();
+  const gpu::Program& program = truth ? with_truth_ : plain_;
+  program.set("u_exposure", s.display.exposure);
+  program.set("u_tonemap", int(s.display.tonemap));
+  if (truth) {
+    program.set("u_split", split);
+    program.set("u_line", s.truth == TruthMode::kSplit ? 1 : 0);
+    program.set("u_heatmap", s.heatmap ? 1 : 0);
+    program.set("u_heat_max", std::max(s.heat_max, 1e-4f));
+    program.set("u_size", vec2(size));
+  }
+  program.use();
   glBindVertexArray(vao_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }

@@ -39,7 +39,7 @@ class ViewerOutput {
   void draw(const gpu::Texture& frame, ivec2 size, const OutputSettings& settings) const;
 
  private:
-  gpu::Program program_;
+  gpu::Program plain_, with_truth_;
   gpu::Handle<gpu::VertexArrayTraits> vao_;
   gpu::Texture truth_;
   bool has_truth_ = false;

@@ -38,8 +38,8 @@ void parameterControl(ViewerState& state, const ParamSpec& spec) {
     case ParamSpec::Type::kFloat: {
       float v = std::stof(value);
       const float speed = float(std::max(1e-4, (spec.max - spec.min) / 400.0));
-      ImGui::DragFloat(label.c_str(), &v, std::min(speed, 0.01f), float(spec.min),
-                       float(spec.max), "%.4g", ImGuiSliderFlags_AlwaysClamp);
+      ImGui::DragFloat(label.c_str(), &v, std::min(speed, 0.01f), float(spec.min), float(spec.max),
+                       "%.4g", ImGuiSliderFlags_AlwaysClamp);
       if (ImGui::IsItemDeactivatedAfterEdit()) setValue(state, spec, fmt::format("{}", v));
       break;
     }
@@ -65,8 +65,7 @@ void methodSection(ViewerState& state) {
       }
     ImGui::EndCombo();
   }
-  if (ImGui::SliderInt("order K", &state.settings.order, 0, 16, "%d",
-                       ImGuiSliderFlags_AlwaysClamp))
+  if (ImGui::SliderInt("order K", &state.settings.order, 0, 16, "%d", ImGuiSliderFlags_AlwaysClamp))
     state.method_changed = true;
   if (ImGui::Checkbox("mip-mapped lookups", &state.settings.mip)) state.method_changed = true;
   const std::vector<ParamSpec>& params = findMethod(state.method).info.params;
@@ -154,8 +153,7 @@ void drawViewerPanel(const Scene& scene, ViewerState& state) {
   if (!state.selected.empty()) ImGui::Text("selected: %s (F frames it)", state.selected.c_str());
   if (ImGui::CollapsingHeader("method", ImGuiTreeNodeFlags_DefaultOpen)) methodSection(state);
   if (ImGui::CollapsingHeader("scene")) sceneSection(scene, state);
-  if (ImGui::CollapsingHeader("ground truth", ImGuiTreeNodeFlags_DefaultOpen))
-    truthSection(state);
+  if (ImGui::CollapsingHeader("ground truth", ImGuiTreeNodeFlags_DefaultOpen)) truthSection(state);
   if (ImGui::CollapsingHeader("statistics", ImGuiTreeNodeFlags_DefaultOpen)) statsSection(state);
   if (!state.message.empty()) ImGui::TextWrapped("%s", state.message.c_str());
   ImGui::TextDisabled(

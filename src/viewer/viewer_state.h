@@ -39,8 +39,8 @@ struct ViewerState {
   FrameReadout readout;
   std::string truth_status;
   double psnr = std::numeric_limits<double>::quiet_NaN();  // on reflector pixels, current only
-  std::string selected;  // the picked instance, or ""
-  std::string message;   // the last error or notice
+  std::string selected;                                    // the picked instance, or ""
+  std::string message;                                     // the last error or notice
   bool recording = false, playing_path = false;
   ivec2 size{0};
 };

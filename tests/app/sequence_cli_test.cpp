@@ -28,9 +28,10 @@ double psnrBetween(const fs::path& a, const fs::path& b) {
 
 TEST_F(SequenceCli, FramesAreWrittenPerTimeAndEqualSingleRendersAtThoseTimes) {
   const fs::path dir = testTempDir("seq");
-  CliResult r = runMirage("render --scene ripple-pool --method envmap --size 96x64 --frames 3 "
-                          "--fps 4 --time 0.5 -o " +
-                          (dir / "f.png").string());
+  CliResult r = runMirage(
+      "render --scene ripple-pool --method envmap --size 96x64 --frames 3 "
+      "--fps 4 --time 0.5 -o " +
+      (dir / "f.png").string());
   ASSERT_EQ(r.code, 0) << r.output;
   for (int i = 0; i < 3; ++i) ASSERT_TRUE(fs::exists(dir / fmt::format("f_000{}.png", i))) << i;
   EXPECT_FALSE(fs::exists(dir / "f.png"));

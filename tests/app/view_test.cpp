@@ -46,9 +46,11 @@ TEST(ViewCli, WithoutDisplayExitsTwoAndSaysSo) {
 
 TEST(ViewCli, BadInputExitsTwoNamingTheProblem) {
   const auto dir = testTempDir("view-bad");
-  writeText(dir / "path.json", R"({"path": [{"time": 0, "position": [0, 1, 2], "target": [0, 1, 0]}]})");
+  writeText(dir / "path.json",
+            R"({"path": [{"time": 0, "position": [0, 1, 2], "target": [0, 1, 0]}]})");
   writeText(dir / "still.json", R"({"position": [0, 1, 2], "target": [0, 1, 0]})");
-  writeText(dir / "events.json", R"({"events": [{"frame": 1, "type": "key", "key": "WUT", "down": true}]})");
+  writeText(dir / "events.json",
+            R"({"events": [{"frame": 1, "type": "key", "key": "WUT", "down": true}]})");
   const struct {
     std::string args, expected;
   } cases[] = {
@@ -86,9 +88,9 @@ TEST(ViewUnderXvfb, ScreenshotMatchesTheHeadlessRender) {
     const CameraFile shot = loadCameraFile((dir / "view.camera.json").string());
     ASSERT_TRUE(shot.time.has_value());
     EXPECT_NEAR(*shot.time, 3.0f / 60.0f, 1e-6f);  // three 1/60 s steps after the first frame
-    const CliResult r = runMirage("render" + common + " --camera-path " +
-                                  (dir / "view.camera.json").string() + " -o " +
-                                  (dir / "render.png").string());
+    const CliResult r =
+        runMirage("render" + common + " --camera-path " + (dir / "view.camera.json").string() +
+                  " -o " + (dir / "render.png").string());
     ASSERT_EQ(r.code, 0) << r.output;
     const double psnr = psnrOf(dir / "view.png", dir / "render.png");
     std::printf("%s: viewer screenshot vs headless render %.1f dB\n", method, psnr);
@@ -116,15 +118,16 @@ TEST(ViewUnderXvfb, ReplayedEventsRecordAPathThatPlaysBackAlike) {
     {"frame": 19, "type": "button", "button": "right", "down": false},
     {"frame": 20, "type": "scroll", "y": 2}]})");
   const std::string common = " --scene teapot-sphere --size 320x240 --order 1 --method envmap";
-  CliResult v = runMirage("view" + common + " --frames 24 --events " +
-                          (dir / "events.json").string() + " --record-path " +
-                          (dir / "walk.json").string() + " --screenshot " +
-                          (dir / "shot.png").string());
+  CliResult v =
+      runMirage("view" + common + " --frames 24 --events " + (dir / "events.json").string() +
+                " --record-path " + (dir / "walk.json").string() + " --screenshot " +
+                (dir / "shot.png").string());
   ASSERT_EQ(v.code, 0) << v.output;
   const CameraFile shot = loadCameraFile((dir / "shot.camera.json").string());
   const CameraFile walk = loadCameraFile((dir / "walk.json").string());
   // The events moved the camera away from the scene's.
-  const CameraFile start = parseCameraFile("main", R"({"position": [0, 1.7, 4.6], "target": [0, 0.8, -0.3]})");
+  const CameraFile start =
+      parseCameraFile("main", R"({"position": [0, 1.7, 4.6], "target": [0, 0.8, -0.3]})");
   EXPECT_GT(glm::distance(shot.camera.position, start.camera.position), 0.3f);
   ASSERT_GE(walk.camera.path.keys.size(), 10u);
   const float end = walk.camera.path.end();
@@ -194,10 +197,10 @@ TEST(ViewUnderXvfb, F12WritesShotsAndResizingRendersAtTheNewSize) {
     {"frame": 8, "type": "key", "key": "F12", "down": true},
     {"frame": 8, "type": "key", "key": "F12", "down": false}]})");
   const std::string common = " --scene sphere-over-checker --order 1 --method envmap";
-  const CliResult v = runMirage("view" + common + " --size 320x240 --frames 10 --events " +
-                                (dir / "events.json").string() + " --screenshot-dir " +
-                                (dir / "shots").string() + " --report " +
-                                (dir / "report.json").string());
+  const CliResult v =
+      runMirage("view" + common + " --size 320x240 --frames 10 --events " +
+                (dir / "events.json").string() + " --screenshot-dir " + (dir / "shots").string() +
+                " --report " + (dir / "report.json").string());
   ASSERT_EQ(v.code, 0) << v.output;
   const fs::path first = dir / "shots" / "sphere-over-checker-envmap-1.png";
   const fs::path second = dir / "shots" / "sphere-over-checker-envmap-2.png";
@@ -209,9 +212,10 @@ TEST(ViewUnderXvfb, F12WritesShotsAndResizingRendersAtTheNewSize) {
   EXPECT_EQ(small.height(), 150);
   EXPECT_EQ(readJson(dir / "report.json")["size"], nlohmann::json::array({200, 150}));
   // Each shot is `render`'s frame of its camera file at its size.
-  const CliResult r = runMirage("render" + common + " --size 200x150 --camera-path " +
-                                (dir / "shots" / "sphere-over-checker-envmap-2.camera.json").string() +
-                                " -o " + (dir / "r.png").string());
+  const CliResult r =
+      runMirage("render" + common + " --size 200x150 --camera-path " +
+                (dir / "shots" / "sphere-over-checker-envmap-2.camera.json").string() + " -o " +
+                (dir / "r.png").string());
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_GT(psnrOf(second, dir / "r.png"), 45.0);
 }
@@ -223,18 +227,21 @@ TEST(ViewUnderXvfb, GroundTruthSplitAndPsnrAreTheHeadlessOnes) {
   MIRAGE_NEED_DISPLAY();
   const auto dir = testTempDir("view-truth");
   const std::string scene = " --scene sphere-over-checker --size 240x160 --order 1";
-  const CliResult v = runMirage("view" + scene +
-                                " --method envmap --frames 3 --truth split --truth-resolution 1 "
-                                "--screenshot " +
-                                (dir / "split.png").string() + " --report " +
-                                (dir / "report.json").string());
+  const CliResult v =
+      runMirage("view" + scene +
+                " --method envmap --frames 3 --truth split --truth-resolution 1 "
+                "--screenshot " +
+                (dir / "split.png").string() + " --report " + (dir / "report.json").string());
   ASSERT_EQ(v.code, 0) << v.output;
-  ASSERT_EQ(runMirage("render" + scene + " --method envmap -o " + (dir / "m.png").string()).code, 0);
-  ASSERT_EQ(runMirage("render" + scene + " --method raytrace --spp 4 -o " + (dir / "t.png").string())
-                .code,
+  ASSERT_EQ(runMirage("render" + scene + " --method envmap -o " + (dir / "m.png").string()).code,
             0);
+  ASSERT_EQ(
+      runMirage("render" + scene + " --method raytrace --spp 4 -o " + (dir / "t.png").string())
+          .code,
+      0);
   const Image shot = readImage((dir / "split.png").string());
-  const Image method = readImage((dir / "m.png").string()), truth = readImage((dir / "t.png").string());
+  const Image method = readImage((dir / "m.png").string()),
+              truth = readImage((dir / "t.png").string());
   ASSERT_EQ(shot.width(), 240);
   double left = 0.0, right = 0.0;
   int nl = 0, nr = 0;

@@ -86,8 +86,8 @@ TEST_F(DynamicCounts, OneObjectMovingRedoesOnlyWhatShowsIt) {
     expectAllZero(f.camera_moved, {"billboard_captures", "environment_captures"}, "billboard");
     const double all = f.stats.at("diffuse_billboards") + f.stats.at("reflective_billboards");
     const double moved = count(f.scene_moved, "billboard_captures");
-    EXPECT_GE(moved, 1.0);   // the torus's
-    EXPECT_LT(moved, all);   // and not the teapot's, the floor's or the sphere's
+    EXPECT_GE(moved, 1.0);  // the torus's
+    EXPECT_LT(moved, all);  // and not the teapot's, the floor's or the sphere's
   }
   {
     const Frames f = threeFrames(scene, "depthmap");

@@ -66,7 +66,8 @@ TEST(RaytraceAnalytic, MirrorSphereReflectsTheCheckerFloorExactly) {
       if (occluded) continue;
       vec2 uv(q.x + 8.0f, 8.0f - q.z);  // the floor quad's texture coordinates
       vec2 frac = glm::fract(uv);
-      if (glm::min(glm::min(frac.x, 1.0f - frac.x), glm::min(frac.y, 1.0f - frac.y)) < 0.03f) continue;
+      if (glm::min(glm::min(frac.x, 1.0f - frac.x), glm::min(frac.y, 1.0f - frac.y)) < 0.03f)
+        continue;
       bool light = int(std::floor(uv.x) + std::floor(uv.y)) % 2 == 0;
       vec3 albedo = light ? floor.albedo : floor.checker_color;
       vec3 expected = sh::shade_diffuse(albedo, vec3(0, 1, 0), scene.light.direction,

@@ -56,8 +56,10 @@ TEST(Ripple, NormalsAreTheHeightFieldsAndTheGradientIsTheDerivative) {
   for (size_t i = 0; i < rest.positions.size(); ++i) {
     const vec3 p = rest.positions[i];
     // Central differences of h over x and z.
-    const float hx = (d.height(p + vec3(e, 0, 0), 0.6f) - d.height(p - vec3(e, 0, 0), 0.6f)) / (2 * e);
-    const float hz = (d.height(p + vec3(0, 0, e), 0.6f) - d.height(p - vec3(0, 0, e), 0.6f)) / (2 * e);
+    const float hx =
+        (d.height(p + vec3(e, 0, 0), 0.6f) - d.height(p - vec3(e, 0, 0), 0.6f)) / (2 * e);
+    const float hz =
+        (d.height(p + vec3(0, 0, e), 0.6f) - d.height(p - vec3(0, 0, e), 0.6f)) / (2 * e);
     const vec3 g = d.gradient(p, 0.6f);
     EXPECT_NEAR(g.x, hx, 2e-3f);
     EXPECT_NEAR(g.z, hz, 2e-3f);

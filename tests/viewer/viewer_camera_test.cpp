@@ -112,7 +112,8 @@ TEST(EventScript, RoundTripsAndNamesBadFields) {
     EXPECT_EQ(again[i].event.down, events[i].event.down);
     EXPECT_EQ(again[i].event.position, events[i].event.position);
   }
-  for (char c = 'A'; c <= 'Z'; ++c) EXPECT_EQ(keyName(keyCode(std::string(1, c))), std::string(1, c));
+  for (char c = 'A'; c <= 'Z'; ++c)
+    EXPECT_EQ(keyName(keyCode(std::string(1, c))), std::string(1, c));
   const struct {
     const char* text;
     const char* expected;

@@ -174,7 +174,7 @@ MethodEntry depthmapMethodEntry() {
                          "ray's midpoint), 2 (then the row through that row's hit)")};
   for (const ParamSpec& p : billboardStageParams()) entry.info.params.push_back(p);
   entry.info.counters = {"depthmap_color_captures", "depthmap_depth_captures", "srdm_builds",
-                        "billboard_captures", "environment_captures"};
+                         "billboard_captures", "environment_captures"};
   entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
     return std::make_unique<DepthMapMethod>(setup);
   };

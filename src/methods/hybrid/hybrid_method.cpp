@@ -347,8 +347,12 @@ MethodEntry hybridMethodEntry() {
       "triangle and splatted, over a cube map of the rest (hybrid backward-forward paper)";
   entry.info.max_order = 1;
   entry.info.counters = {"background_captures"};
-  entry.info.frame_stats = {"c3rcs",           "cull_leaves_kept",   "cull_hull_rejects",
-                            "cull_exact_rejects", "points_projected", "splats_written"};
+  entry.info.frame_stats = {"c3rcs",
+                            "cull_leaves_kept",
+                            "cull_hull_rejects",
+                            "cull_exact_rejects",
+                            "points_projected",
+                            "splats_written"};
   entry.info.params = {
       ParamSpec::integer(
           "points", 0, 4000000, 0,

@@ -14,8 +14,7 @@ bool sameCamera(const CameraDesc& a, const CameraDesc& b) {
 
 bool BillboardCapture::Key::operator==(const Key& o) const {
   return sameCamera(camera, o.camera) && object == o.object && shape == o.shape &&
-         light_dir == o.light_dir &&
-         light_color == o.light_color && ambient == o.ambient;
+         light_dir == o.light_dir && light_color == o.light_color && ambient == o.ambient;
 }
 
 BillboardCapture::BillboardCapture(int size)
