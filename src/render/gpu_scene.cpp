@@ -79,6 +79,8 @@ GpuScene::GpuScene(const Scene& scene, const EnvironmentMap& environment)
   matrices_.assign(scene.instances.size(), mat4(1.0f));
   deformed_.resize(scene.instances.size());
   instance_versions_.assign(scene.instances.size(), 0);
+  transform_versions_.assign(scene.instances.size(), 0);
+  reflectors_ = scene.reflectorInstances();
   shape_versions_.assign(scene.instances.size(), 0);
   setTime(0.0f);
 }
@@ -94,6 +96,7 @@ void GpuScene::setTime(float time) {
     if (m != matrices_[i] || first) {
       moved = touched = true;
       matrices_[i] = m;
+      ++transform_versions_[i];
     }
     // A deformation that travels (speed != 0) changes the shape at every new time.
     if (inst.deforms() && (first || inst.deformation.period() > 0.0f)) {
@@ -119,6 +122,15 @@ void GpuScene::setTime(float time) {
 void GpuScene::uploadVertices(int mesh_index, const Mesh& mesh) {
   const std::vector<Vertex> vertices = vertexData(mesh);
   meshes_[size_t(mesh_index)].vertices.upload(std::span<const Vertex>(vertices));
+}
+
+std::vector<uint64_t> GpuScene::probeKey(const std::vector<int>& diffuse) const {
+  std::vector<uint64_t> key = {light_version_};
+  for (int i : diffuse) key.push_back(instance_versions_[size_t(i)]);
+  for (int r : reflectors_) key.push_back(transform_versions_[size_t(r)]);
+  if (reflectors_.size() >= 2)
+    for (int r : reflectors_) key.push_back(shape_versions_[size_t(r)]);
+  return key;
 }
 
 const Mesh& GpuScene::mesh(int instance) const {

@@ -35,7 +35,13 @@ class GpuScene {
   // when its transform or its shape changes, its shape version when its mesh deforms, the
   // light's when the light moves or changes colour.
   uint64_t instanceVersion(int instance) const { return instance_versions_[size_t(instance)]; }
+  uint64_t transformVersion(int instance) const { return transform_versions_[size_t(instance)]; }
   uint64_t shapeVersion(int instance) const { return shape_versions_[size_t(instance)]; }
+  // The versions of everything a probe at a reflector (drawn without that reflector) can show:
+  // the light, the `diffuse` instances it draws, every reflector's transform and, when there are
+  // two or more reflectors (which see one another), every reflector's shape. A lone rippling
+  // mirror thus changes no probe of its own.
+  std::vector<uint64_t> probeKey(const std::vector<int>& diffuse) const;
   uint64_t lightVersion() const { return light_version_; }
   // The light at time().
   const Light& light() const { return light_; }
@@ -68,7 +74,8 @@ class GpuScene {
   gpu::Buffer instance_buffer_, material_buffer_;
   std::vector<mat4> matrices_;
   std::vector<Mesh> deformed_;  // per instance: the mesh at time_ (empty unless it deforms)
-  std::vector<uint64_t> instance_versions_, shape_versions_;
+  std::vector<uint64_t> instance_versions_, transform_versions_, shape_versions_;
+  std::vector<int> reflectors_;
   Light light_;
   float time_ = -1.0f;
   uint64_t version_ = 0, light_version_ = 0;

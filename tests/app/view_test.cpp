@@ -11,11 +11,13 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "core/atomic_file.h"
 #include "core/image.h"
 #include "eval/metrics.h"
 #include "scene/camera_file.h"
 #include "support/gl_test.h"
 #include "support/test_files.h"
+#include "viewer/input.h"
 
 namespace mirage::test {
 namespace {
@@ -183,6 +185,43 @@ TEST(ViewUnderXvfb, SwitchingMethodsLeaksNoGlObjects) {
   const int first = j["gl_objects"]["first_frame"]["total"].get<int>();
   EXPECT_GT(first, 10);
   EXPECT_LE(j["gl_objects"]["last_frame"]["total"].get<int>(), first + 1);
+}
+
+// Real input through the window: xdotool (X's XTEST extension) moves the pointer over the
+// viewer, presses keys and finally Escape; GLFW's callbacks (chained behind Dear ImGui's) queue
+// them, the viewer acts on them (W flies, Escape closes the window) and --record-events writes
+// them: the window's path of input works, not only scripts.
+TEST(ViewUnderXvfb, WindowInputReachesTheViewer) {
+  MIRAGE_NEED_DISPLAY();
+  const auto dir = testTempDir("view-xdotool");
+  const std::string viewer =
+      fmt::format("timeout 120 {} view --scene sphere-over-checker --size 160x120 --method none --pause "
+                  "--frames 100000 --record-events {} --report {} > {} 2>&1",
+                  MIRAGE_BINARY, (dir / "events.json").string(), (dir / "report.json").string(),
+                  (dir / "viewer.log").string());
+  // The window is found by its title; every xdotool step is bounded, and Escape ends the run.
+  const std::string input =
+      "timeout 60 xdotool search --sync --name 'sphere-over-checker' windowfocus --sync "
+      "mousemove --window %1 120 90 sleep 0.3 keydown w sleep 0.5 keyup w sleep 0.3 key Escape";
+  const int status = std::system(
+      fmt::format("({} & pid=$!; {} || kill $pid; wait $pid)", viewer, input).c_str());
+  ASSERT_EQ(status, 0) << readFile((dir / "viewer.log").string());
+  const std::vector<ScriptedEvent> events = loadEventScript((dir / "events.json").string());
+  bool w_down = false, w_up = false, escape = false, moved = false;
+  for (const ScriptedEvent& e : events) {
+    if (e.event.type == InputEvent::Type::kKey && keyName(e.event.code) == "W")
+      (e.event.down ? w_down : w_up) = true;
+    if (e.event.type == InputEvent::Type::kKey && keyName(e.event.code) == "ESCAPE") escape = true;
+    if (e.event.type == InputEvent::Type::kMove) moved = true;
+  }
+  EXPECT_TRUE(w_down && w_up && escape && moved) << readFile((dir / "events.json").string());
+  // Flying forward for half a second moved the camera toward the scene.
+  const nlohmann::json j = readJson(dir / "report.json");
+  const vec3 start(0.0f, 2.6f, 6.5f);
+  const vec3 now(j["camera"]["position"][0], j["camera"]["position"][1],
+                 j["camera"]["position"][2]);
+  EXPECT_GT(glm::distance(start, now), 0.5f);
+  EXPECT_LT(j["frames"].get<int>(), 100000);  // Escape ended it
 }
 
 // F12 writes the frame as shown and its camera into --screenshot-dir (numbered, never over an

@@ -28,7 +28,11 @@ class EnvmapMethod final : public Method {
         program_(gpu::Program::graphics("render/shaders/scene.vert", "methods/envmap/envmap.frag",
                                         shaderDefines(variant))),
         base_program_(
-            gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")) {}
+            gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")) {
+    const Scene& scene = setup.gpu.scene();
+    for (int i = 0; i < int(scene.instances.size()); ++i)
+      if (!scene.isReflector(i)) diffuse_.push_back(i);
+  }
 
   const MethodInfo& info() const override { return info_; }
 
@@ -36,12 +40,13 @@ class EnvmapMethod final : public Method {
     if (infinite_) return;
     int order = frame.settings.order;
     bool mip = frame.settings.mip;
-    if (captured_ && captured_version_ == frame.gpu.version() && captured_order_ == order &&
-        captured_mip_ == mip)
+    // The probes show every diffuse object, the other reflectors and the light.
+    std::vector<uint64_t> key = frame.gpu.probeKey(diffuse_);
+    if (captured_ && captured_key_ == key && captured_order_ == order && captured_mip_ == mip)
       return;
     capture(frame, order, mip);
     captured_ = true;
-    captured_version_ = frame.gpu.version();
+    captured_key_ = std::move(key);
     captured_order_ = order;
     captured_mip_ = mip;
   }
@@ -146,7 +151,8 @@ class EnvmapMethod final : public Method {
   int final_ = 0;
   std::unique_ptr<CubeCapture> cube_;
   bool captured_ = false, captured_mip_ = false;
-  uint64_t captured_version_ = 0;
+  std::vector<uint64_t> captured_key_;
+  std::vector<int> diffuse_;  // every diffuse instance: what the probes show besides reflectors
   int captured_order_ = -1;
   long cube_captures_ = 0, capture_passes_ = 0;
 };

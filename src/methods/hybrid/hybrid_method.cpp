@@ -77,9 +77,7 @@ class HybridMethod final : public Method {
     // The background probes show the objects without points, the reflectors and the light: a
     // point-sampled object that moves changes none of them (its tree lives in object space, and
     // the query moves instead).
-    std::vector<uint64_t> key = {frame.gpu.lightVersion()};
-    for (const std::vector<int>* list : {&background_, &reflectors_})
-      for (int i : *list) key.push_back(frame.gpu.instanceVersion(i));
+    std::vector<uint64_t> key = frame.gpu.probeKey(background_);
     if (captured_ && captured_key_ == key && captured_mip_ == frame.settings.mip) return;
     captureBackground(frame);
     captured_ = true;

@@ -27,6 +27,8 @@ ZexelCurvedReflectors::ZexelCurvedReflectors(const MethodSetup& setup)
   const std::vector<int> planar = planarReflectors(scene);
   for (int i : scene.reflectorInstances())
     if (std::find(planar.begin(), planar.end(), i) == planar.end()) curved_.push_back(i);
+  for (int i = 0; i < int(scene.instances.size()); ++i)
+    if (!scene.isReflector(i)) diffuse_.push_back(i);
   program_.set("u_step_angle", search_.step_angle);
   program_.set("u_max_steps", search_.max_steps);
   program_.set("u_max_slope", search_.max_slope);
@@ -35,7 +37,9 @@ ZexelCurvedReflectors::ZexelCurvedReflectors(const MethodSetup& setup)
 void ZexelCurvedReflectors::update(FrameContext& frame) {
   if (!inverse_ || curved_.empty() || frame.settings.order == 0) return;
   const bool mip = frame.settings.mip;
-  if (captured_ && captured_version_ == frame.gpu.version() && captured_mip_ == mip) return;
+  // The cubes show every diffuse object, the other reflectors and the light.
+  std::vector<uint64_t> key = frame.gpu.probeKey(diffuse_);
+  if (captured_ && captured_key_ == key && captured_mip_ == mip) return;
   const int levels = mip ? gpu::Texture::fullMipLevels(size_) : 1;
   if (cubes_.layers() != 6 * int(curved_.size()) || cubes_.levels() != levels)
     cubes_ = gpu::Texture::createCubeArray(GL_RGBA32F, size_, int(curved_.size()), levels);
@@ -56,7 +60,7 @@ void ZexelCurvedReflectors::update(FrameContext& frame) {
   }
   if (mip) cubes_.generateMipmaps();
   captured_ = true;
-  captured_version_ = frame.gpu.version();
+  captured_key_ = std::move(key);
   captured_mip_ = mip;
 }
 

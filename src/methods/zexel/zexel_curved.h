@@ -48,7 +48,8 @@ class ZexelCurvedReflectors {
   std::vector<vec3> centres_;
   std::unique_ptr<CubeCapture> capture_;
   bool captured_ = false, captured_mip_ = false;
-  uint64_t captured_version_ = 0;
+  std::vector<uint64_t> captured_key_;
+  std::vector<int> diffuse_;  // every diffuse instance
   long captures_ = 0;
 };
 
