@@ -118,7 +118,10 @@ int ViewerApp::run() {
       moveCamera(seconds);
     }
     const ivec2 size = window_.framebufferSize();
-    if (size.x <= 0 || size.y <= 0) continue;  // minimised
+    if (size.x <= 0 || size.y <= 0) {  // minimised: wait for the window to come back
+      glfwWaitEventsTimeout(0.1);
+      continue;
+    }
     if (!ensureStage(size)) break;
     const bool last_frame = scripted_run && frame_ + 1 >= options_.frames;
     renderFrame(size);

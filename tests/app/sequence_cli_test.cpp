@@ -125,6 +125,18 @@ TEST_F(SequenceCli, BenchPlaysTheSceneAndCountsWhatEachMethodRedid) {
   EXPECT_EQ(j["methods"]["envmap"]["counts_per_frame"]["cube_captures"], 1.0);
   EXPECT_EQ(j["methods"]["raytrace"]["counts_per_frame"]["bvh_builds"], 1.0);
   EXPECT_TRUE(j["methods"]["none"]["ms_parts_p95"].contains("update"));
+  // A camera file's path is played along with the scene.
+  CameraDesc walk;
+  walk.name = "walked";
+  walk.path.keys = {{0.0f, {2.8f, 1.7f, 3.2f}, {-0.8f, 1.4f, -3.0f}},
+                    {1.0f, {1.2f, 1.65f, 2.4f}, {-0.6f, 1.4f, -3.2f}}};
+  saveCameraFile((dir / "walk.json").string(), walk);
+  r = runMirage("bench --scene mirror-room --methods none --fps 30 --frames 3 --warmup 1 "
+                "--size 96x64 --camera-path " +
+                (dir / "walk.json").string() + " --json " + json.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  std::ifstream walked(json);
+  EXPECT_EQ(nlohmann::json::parse(walked)["camera"], "walked");
   // Still (no --fps): nothing is redone after the warm-up.
   r = runMirage(
       "bench --scene mirror-room --methods envmap --frames 3 --warmup 1 --size 96x64 --json " +

@@ -224,6 +224,28 @@ TEST(ViewUnderXvfb, WindowInputReachesTheViewer) {
   EXPECT_LT(j["frames"].get<int>(), 100000);  // Escape ended it
 }
 
+// A click (press and release without a drag) selects what is under the cursor, traced against
+// the scene; F frames it: the camera then looks at the centre of its bounds.
+TEST(ViewUnderXvfb, ClickSelectsAndFFramesTheSelection) {
+  MIRAGE_NEED_DISPLAY();
+  const auto dir = testTempDir("view-select");
+  // sphere-over-checker's mirror sphere sits in the middle of the main camera's view.
+  writeText(dir / "events.json", R"({"events": [
+    {"frame": 1, "type": "move", "x": 160, "y": 120},
+    {"frame": 2, "type": "button", "button": "left", "down": true},
+    {"frame": 3, "type": "button", "button": "left", "down": false},
+    {"frame": 4, "type": "key", "key": "F", "down": true},
+    {"frame": 4, "type": "key", "key": "F", "down": false}]})");
+  const CliResult v = runMirage(
+      "view --scene sphere-over-checker --size 320x240 --method none --frames 6 --events " +
+      (dir / "events.json").string() + " --report " + (dir / "report.json").string());
+  ASSERT_EQ(v.code, 0) << v.output;
+  const nlohmann::json j = readJson(dir / "report.json");
+  EXPECT_EQ(j["selected"], "mirror-sphere");
+  const vec3 target(j["camera"]["target"][0], j["camera"]["target"][1], j["camera"]["target"][2]);
+  EXPECT_LT(glm::distance(target, vec3(0.0f, 1.25f, 0.0f)), 1e-4f);  // the sphere's centre
+}
+
 // F12 writes the frame as shown and its camera into --screenshot-dir (numbered, never over an
 // earlier shot), and a resize re-makes the frame at the window's new size.
 TEST(ViewUnderXvfb, F12WritesShotsAndResizingRendersAtTheNewSize) {
