@@ -129,9 +129,9 @@ void truthSection(ViewerState& state) {
 
 void statsSection(const ViewerState& state) {
   const FrameReadout& r = state.readout;
-  ImGui::Text("%dx%d: %.2f ms (%.1f fps)", state.size.x, state.size.y, r.frame_ms,
-              r.frame_ms > 0.0 ? 1000.0 / r.frame_ms : 0.0);
-  ImGui::Text("update %.2f ms, render %.2f ms", r.update_ms, r.render_ms);
+  ImGui::Text("%dx%d: %.1f fps (%.2f ms a frame)", state.size.x, state.size.y,
+              r.loop_ms > 0.0 ? 1000.0 / r.loop_ms : 0.0, r.loop_ms);
+  ImGui::Text("method %.2f ms: update %.2f, render %.2f", r.frame_ms, r.update_ms, r.render_ms);
   ImGui::Text("order rendered %d, reflector pixels %zu", r.order_rendered, r.reflector_pixels);
   for (const auto& [name, value] : r.counts) ImGui::Text("%s: %g", name.c_str(), value);
   ImGui::TextDisabled("GL objects held: %ld", r.gl_handles);

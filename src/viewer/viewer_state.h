@@ -15,7 +15,8 @@ namespace mirage {
 
 struct FrameReadout {
   double frame_ms = 0.0, update_ms = 0.0, render_ms = 0.0;  // smoothed over recent frames
-  std::map<std::string, double> counts;                     // the last frame's
+  double loop_ms = 0.0;                  // frame to frame, the panel and the swap included
+  std::map<std::string, double> counts;  // the last frame's
   size_t reflector_pixels = 0;
   long gl_handles = 0;
   int order_rendered = 0;
