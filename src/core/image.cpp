@@ -13,6 +13,7 @@
 #include <stb_image_write.h>
 
 #include "core/atomic_file.h"
+#include "core/radiance_check.h"
 
 namespace mirage {
 
@@ -133,6 +134,7 @@ Image readImageFromMemory(const std::string& name, const void* data, size_t size
                stbi_failure_reason());
   checkImageSize(name, w, h);
   if (stbi_is_hdr_from_memory(buffer, int(size))) {
+    checkRadianceScanlines(name, buffer, size);
     float* f = stbi_loadf_from_memory(buffer, int(size), &w, &h, &channels, 4);
     return fromStb(name, f, w, h, true, encoding);
   }

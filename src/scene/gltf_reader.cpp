@@ -334,7 +334,10 @@ class GltfConverter {
 }  // namespace
 
 LoadedModel loadGltf(const std::string& path, const LoadLimits& limits) {
-  std::string bytes = loader::readWholeFile(path);
+  return readGltf(path, loader::readWholeFile(path), limits);
+}
+
+LoadedModel readGltf(const std::string& path, const std::string& bytes, const LoadLimits& limits) {
   if (bytes.empty()) throwInput("{}: empty file (expected glTF JSON or a GLB container)", path);
   if (bytes.size() >= (uint64_t(1) << 32)) throwInput("{}: larger than 4 GiB", path);
   if (std::vector<std::string> required = requiredExtensions(bytes); !required.empty()) {

@@ -49,6 +49,11 @@ Mesh loadPly(const std::string& path, const LoadLimits& limits = {});
 Mesh readPly(const std::string& name, const std::string& bytes, const LoadLimits& limits = {});
 LoadedModel loadObj(const std::string& path, const LoadLimits& limits = {});
 LoadedModel loadGltf(const std::string& path, const LoadLimits& limits = {});
+// The same from a file's bytes in memory; `path` names it in messages and its folder is where
+// the files it refers to (.mtl, glTF buffers and images) are looked for.
+LoadedModel readObj(const std::string& path, std::string text, const LoadLimits& limits = {});
+LoadedModel readGltf(const std::string& path, const std::string& bytes,
+                     const LoadLimits& limits = {});
 LoadedModel loadWithAssimp(const std::string& path, const LoadLimits& limits = {});
 
 }  // namespace mirage

@@ -160,7 +160,10 @@ class ObjMaterials {
 }  // namespace
 
 LoadedModel loadObj(const std::string& path, const LoadLimits& limits) {
-  std::string text = loader::readWholeFile(path);
+  return readObj(path, loader::readWholeFile(path), limits);
+}
+
+LoadedModel readObj(const std::string& path, std::string text, const LoadLimits& limits) {
   preScan(path, text, limits);
 
   tinyobj::attrib_t attrib;
