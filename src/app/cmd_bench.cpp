@@ -126,8 +126,9 @@ int runBench(BenchArgs& args) {
     const View frame_view = args.fps > 0.0 ? View(camera.at(time), size) : view;
     for (Run& r : runs) {
       if (f >= r.frames) continue;
-      renderer.render(*r.method, frame_view, time, settings, r.timer.get());
-      for (const auto& [name, n] : renderer.lastFrameCounts()) r.counts[name] += n;
+      std::map<std::string, double> counts;
+      renderer.render(*r.method, frame_view, time, settings, r.timer.get(), &counts);
+      for (const auto& [name, n] : counts) r.counts[name] += n;
       progress.advance();
     }
   }

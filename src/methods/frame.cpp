@@ -29,12 +29,14 @@ std::unique_ptr<Method> FrameRenderer::createMethod(const std::string& name,
 }
 
 void FrameRenderer::render(Method& method, const View& view, float time,
-                           const FrameSettings& settings, gpu::FrameTimer* timer) {
+                           const FrameSettings& settings, gpu::FrameTimer* timer,
+                           std::map<std::string, double>* counts) {
   if (view.size() != target_.size())
     throwRuntime("view size {}x{} differs from the frame size {}x{}", view.size().x, view.size().y,
                  target_.size().x, target_.size().y);
   FrameContext frame{*gpu_, *passes_, target_, view, settings, timer};
-  const std::map<std::string, double> before = method.stats();
+  const std::map<std::string, double> before =
+      counts ? method.stats() : std::map<std::string, double>{};
   if (timer) timer->beginFrame();
   frame.beginPart(gpu::Part::kUpdate);
   gpu_->setTime(time);
@@ -46,7 +48,7 @@ void FrameRenderer::render(Method& method, const View& view, float time,
   passes_->begin(view, settings);
   method.render(frame);
   if (timer) timer->endFrame();
-  last_counts_ = frameCounts(method.info(), before, method.stats());
+  if (counts) *counts = frameCounts(method.info(), before, method.stats());
 }
 
 RenderedFrame FrameRenderer::read() const {

@@ -32,11 +32,12 @@ class FrameRenderer {
                                        const std::map<std::string, std::string>& given,
                                        const FrameSettings& settings);
 
-  // Moves the scene to `time`, updates the method and renders one frame of `view`.
+  // Moves the scene to `time`, updates the method and renders one frame of `view`. With
+  // `counts`, also what the frame did (methods/method.h: frameCounts), from the method's stats
+  // before and after it: asked for only where it is shown (bench, the viewer), since a method's
+  // stats may read counters back from the GPU.
   void render(Method& method, const View& view, float time, const FrameSettings& settings,
-              gpu::FrameTimer* timer = nullptr);
-  // What the last render() did (methods/method.h: frameCounts).
-  const std::map<std::string, double>& lastFrameCounts() const { return last_counts_; }
+              gpu::FrameTimer* timer = nullptr, std::map<std::string, double>* counts = nullptr);
   RenderedFrame read() const;
 
  private:
@@ -46,7 +47,6 @@ class FrameRenderer {
   std::unique_ptr<ScenePasses> passes_;
   FrameTarget target_;
   std::vector<std::unique_ptr<ParamValues>> param_storage_;
-  std::map<std::string, double> last_counts_;
 };
 
 }  // namespace mirage

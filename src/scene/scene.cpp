@@ -16,6 +16,13 @@ std::vector<int> Scene::reflectorInstances() const {
   return out;
 }
 
+std::vector<int> Scene::diffuseInstances() const {
+  std::vector<int> out;
+  for (size_t i = 0; i < instances.size(); ++i)
+    if (!isReflector(int(i))) out.push_back(int(i));
+  return out;
+}
+
 size_t Scene::triangleCount() const {
   size_t n = 0;
   for (const Instance& inst : instances) n += meshes[size_t(inst.mesh)].triangleCount();
@@ -50,22 +57,12 @@ Light Light::at(float time) const {
   Light l = *this;
   l.keys.clear();
   if (keys.empty()) return l;
-  const float start = keys.front().time, end = keys.back().time;
-  if (loop && end > start) {
-    time = start + std::fmod(time - start, end - start);
-    if (time < start) time += end - start;
-  }
-  auto hold = [&](const LightKey& k) {
-    l.direction = k.direction;
-    l.color = k.color;
-    return l;
-  };
-  if (keys.size() == 1 || time <= start) return hold(keys.front());
-  if (time >= end) return hold(keys.back());
-  size_t i = 1;
-  while (keys[i].time < time) ++i;
-  const LightKey &a = keys[i - 1], &b = keys[i];
-  const float u = (time - a.time) / std::max(b.time - a.time, 1e-9f);
+  const KeySpan span = keySpan(keys, time, loop);
+  const LightKey &a = keys[span.a], &b = keys[span.b];
+  l.direction = a.direction;
+  l.color = a.color;
+  if (span.a == span.b) return l;
+  const float u = span.u;
   // Slerp of unit vectors: a constant angular speed from one key's direction to the next.
   const float cos_angle = std::clamp(glm::dot(a.direction, b.direction), -1.0f, 1.0f);
   const float angle = std::acos(cos_angle);

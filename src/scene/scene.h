@@ -88,6 +88,8 @@ struct Scene {
   }
   // Instances with reflector materials, in scene order; reflector id = position + 1.
   std::vector<int> reflectorInstances() const;
+  // The other instances (diffuse materials), in scene order.
+  std::vector<int> diffuseInstances() const;
   size_t triangleCount() const;
   // The instance's mesh at `time` into `out`: deformed when the instance deforms, else a copy.
   void meshAt(int instance, float time, Mesh& out) const;

@@ -213,7 +213,8 @@ void ViewerApp::renderFrame(ivec2 size) {
   gpu::FrameTimer timer(gpu::Clock::kWall);
   const View view(camera_.desc(), size);
   try {
-    renderer_->render(*method_, view, state_.clock.time, state_.settings, &timer);
+    renderer_->render(*method_, view, state_.clock.time, state_.settings, &timer,
+                      &state_.readout.counts);
   } catch (const InputError& e) {
     // A setting the method refuses at render time (an order below its minimum): back to 1.
     state_.message = e.what();
@@ -232,7 +233,6 @@ void ViewerApp::renderFrame(ivec2 size) {
   r.frame_ms += k * (t.total_ms - r.frame_ms);
   r.update_ms += k * (update - r.update_ms);
   r.render_ms += k * (render - r.render_ms);
-  r.counts = renderer_->lastFrameCounts();
   r.gl_handles = gpu::liveHandles().total();
   r.order_rendered = method_->orderRendered(state_.settings.order);
   if (frame_ % 15 == 0) r.reflector_pixels = countNonZero(renderer_->target().readIds());

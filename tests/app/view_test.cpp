@@ -37,6 +37,10 @@ nlohmann::json readJson(const fs::path& p) {
   return nlohmann::json::parse(in);
 }
 
+vec3 vec3Of(const nlohmann::json& v) {
+  return {v[0].get<float>(), v[1].get<float>(), v[2].get<float>()};
+}
+
 TEST(ViewCli, WithoutDisplayExitsTwoAndSaysSo) {
   const auto dir = testTempDir("view-nodisplay");
   const CliResult r =
@@ -194,17 +198,17 @@ TEST(ViewUnderXvfb, SwitchingMethodsLeaksNoGlObjects) {
 TEST(ViewUnderXvfb, WindowInputReachesTheViewer) {
   MIRAGE_NEED_DISPLAY();
   const auto dir = testTempDir("view-xdotool");
-  const std::string viewer =
-      fmt::format("timeout 120 {} view --scene sphere-over-checker --size 160x120 --method none --pause "
-                  "--frames 100000 --record-events {} --report {} > {} 2>&1",
-                  MIRAGE_BINARY, (dir / "events.json").string(), (dir / "report.json").string(),
-                  (dir / "viewer.log").string());
+  const std::string viewer = fmt::format(
+      "timeout 120 {} view --scene sphere-over-checker --size 160x120 --method none --pause "
+      "--frames 100000 --record-events {} --report {} > {} 2>&1",
+      MIRAGE_BINARY, (dir / "events.json").string(), (dir / "report.json").string(),
+      (dir / "viewer.log").string());
   // The window is found by its title; every xdotool step is bounded, and Escape ends the run.
   const std::string input =
       "timeout 60 xdotool search --sync --name 'sphere-over-checker' windowfocus --sync "
       "mousemove --window %1 120 90 sleep 0.3 keydown w sleep 0.5 keyup w sleep 0.3 key Escape";
-  const int status = std::system(
-      fmt::format("({} & pid=$!; {} || kill $pid; wait $pid)", viewer, input).c_str());
+  const int status =
+      std::system(fmt::format("({} & pid=$!; {} || kill $pid; wait $pid)", viewer, input).c_str());
   ASSERT_EQ(status, 0) << readFile((dir / "viewer.log").string());
   const std::vector<ScriptedEvent> events = loadEventScript((dir / "events.json").string());
   bool w_down = false, w_up = false, escape = false, moved = false;
@@ -218,8 +222,7 @@ TEST(ViewUnderXvfb, WindowInputReachesTheViewer) {
   // Flying forward for half a second moved the camera toward the scene.
   const nlohmann::json j = readJson(dir / "report.json");
   const vec3 start(0.0f, 2.6f, 6.5f);
-  const vec3 now(j["camera"]["position"][0], j["camera"]["position"][1],
-                 j["camera"]["position"][2]);
+  const vec3 now = vec3Of(j["camera"]["position"]);
   EXPECT_GT(glm::distance(start, now), 0.5f);
   EXPECT_LT(j["frames"].get<int>(), 100000);  // Escape ended it
 }
@@ -242,7 +245,7 @@ TEST(ViewUnderXvfb, ClickSelectsAndFFramesTheSelection) {
   ASSERT_EQ(v.code, 0) << v.output;
   const nlohmann::json j = readJson(dir / "report.json");
   EXPECT_EQ(j["selected"], "mirror-sphere");
-  const vec3 target(j["camera"]["target"][0], j["camera"]["target"][1], j["camera"]["target"][2]);
+  const vec3 target = vec3Of(j["camera"]["target"]);
   EXPECT_LT(glm::distance(target, vec3(0.0f, 1.25f, 0.0f)), 1e-4f);  // the sphere's centre
 }
 

@@ -58,12 +58,9 @@ Frames threeFrames(const Scene& scene, const std::string& method,
   moved.position += vec3(0.3f, 0.1f, 0.0f);
   Frames f;
   renderer.render(*m, View(cam, {96, 72}), 0.0f, settings);
-  renderer.render(*m, View(cam, {96, 72}), 0.0f, settings);
-  f.still = renderer.lastFrameCounts();
-  renderer.render(*m, View(moved, {96, 72}), 0.0f, settings);
-  f.camera_moved = renderer.lastFrameCounts();
-  renderer.render(*m, View(moved, {96, 72}), 1.0f, settings);
-  f.scene_moved = renderer.lastFrameCounts();
+  renderer.render(*m, View(cam, {96, 72}), 0.0f, settings, nullptr, &f.still);
+  renderer.render(*m, View(moved, {96, 72}), 0.0f, settings, nullptr, &f.camera_moved);
+  renderer.render(*m, View(moved, {96, 72}), 1.0f, settings, nullptr, &f.scene_moved);
   f.stats = m->stats();
   return f;
 }

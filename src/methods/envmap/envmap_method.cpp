@@ -28,11 +28,8 @@ class EnvmapMethod final : public Method {
         program_(gpu::Program::graphics("render/shaders/scene.vert", "methods/envmap/envmap.frag",
                                         shaderDefines(variant))),
         base_program_(
-            gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")) {
-    const Scene& scene = setup.gpu.scene();
-    for (int i = 0; i < int(scene.instances.size()); ++i)
-      if (!scene.isReflector(i)) diffuse_.push_back(i);
-  }
+            gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")),
+        diffuse_(setup.gpu.scene().diffuseInstances()) {}
 
   const MethodInfo& info() const override { return info_; }
 
@@ -121,10 +118,8 @@ class EnvmapMethod final : public Method {
   // The proxy of `envmap-box`: the bounds of the diffuse objects (the room), grown to hold every
   // probe centre, and the probe centres for the shader.
   void setUpBox(FrameContext& frame, const std::vector<int>& reflectors) {
-    const Scene& scene = frame.gpu.scene();
     box_ = Bounds3{};
-    for (size_t i = 0; i < scene.instances.size(); ++i)
-      if (!scene.isReflector(int(i))) box_.extend(frame.gpu.instanceBounds(int(i)));
+    for (int i : diffuse_) box_.extend(frame.gpu.instanceBounds(i));
     std::vector<vec4> centres;
     for (int instance : reflectors) {
       vec3 c = frame.gpu.instanceBounds(instance).center();

@@ -22,13 +22,12 @@ ZexelCurvedReflectors::ZexelCurvedReflectors(const MethodSetup& setup)
       search_(zexelInverseSettings(size_, float(setup.params.real("zexel-curved-step")))),
       program_(
           gpu::Program::graphics("render/shaders/scene.vert", "methods/zexel/zexel_inverse.frag")),
-      base_program_(gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")) {
+      base_program_(gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")),
+      diffuse_(setup.gpu.scene().diffuseInstances()) {
   const Scene& scene = setup.gpu.scene();
   const std::vector<int> planar = planarReflectors(scene);
   for (int i : scene.reflectorInstances())
     if (std::find(planar.begin(), planar.end(), i) == planar.end()) curved_.push_back(i);
-  for (int i = 0; i < int(scene.instances.size()); ++i)
-    if (!scene.isReflector(i)) diffuse_.push_back(i);
   program_.set("u_step_angle", search_.step_angle);
   program_.set("u_max_steps", search_.max_steps);
   program_.set("u_max_slope", search_.max_slope);
