@@ -11,11 +11,15 @@
 #include <spdlog/spdlog.h>
 
 #include "core/error.h"
+#include "core/memory_cap.h"
 
 namespace mirage::fuzz {
 
 inline void quiet() {
   spdlog::set_level(spdlog::level::off);
+  // What one input may make us allocate, well under libFuzzer's 2 GB RSS limit: a header that
+  // asks for more must be refused by the checks before allocation (--max-memory).
+  mirage::setMaxMemory(uint64_t(256) << 20);
   // `assets:` references resolve into a folder that does not exist: a missing file, not a read
   // of whatever the machine has.
   setenv("MIRAGE_ASSET_DIR", "/nonexistent/mirage-fuzz-assets", 1);

@@ -14,7 +14,8 @@
 
 namespace mirage::fuzz {
 
-// Small caps, so that the checks before allocation are what a hostile header reaches.
+// Small caps, so that the checks before allocation are what a hostile header reaches (16 MiB a
+// mesh; images get the targets' --max-memory, fuzz_common.h).
 inline const LoadLimits kLimits{100000, 200000, 16u << 20};
 
 inline void sceneJson(const std::string& bytes) {

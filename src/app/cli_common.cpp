@@ -7,6 +7,7 @@
 #include <spdlog/spdlog.h>
 
 #include "core/error.h"
+#include "core/memory_cap.h"
 #include "methods/method.h"
 #include "scene/camera_file.h"
 
@@ -24,6 +25,10 @@ void addSceneOptions(CLI::App* app, SceneArgs& args) {
                   "`mirage view` records them) to use instead of the scene's cameras");
   args.time_option =
       app->add_option("--time", args.time, "scene time in seconds (animated scenes, camera paths)");
+  app->add_option("--max-memory", args.max_memory,
+                  "what one input file (mesh, image, compressed stream) may make mirage allocate, "
+                  "checked from its header before reading (1M..1T, e.g. 512M, 4G)")
+      ->capture_default_str();
 }
 
 void addFrameOptions(CLI::App* app, FrameArgs& args) {
@@ -63,6 +68,7 @@ Scene loadSceneFromArgs(SceneArgs& args) {
     throwInput("--time {}: allowed 0..1e6 seconds", args.time);
   if (!args.camera_path.empty() && !args.camera.empty())
     throwInput("--camera {} and --camera-path {}: give one of them", args.camera, args.camera_path);
+  setMaxMemory(parseByteSize("--max-memory", args.max_memory));
   SceneOptions options;
   options.reflectors = args.reflectors;
   Scene scene = loadScene(args.scene, options);

@@ -22,6 +22,7 @@ struct SceneArgs {
   std::string camera_path;  // a camera file (scene/camera_file.h), used instead of the scene's
   float time = 0.0f;
   CLI::Option* time_option = nullptr;  // to tell a given --time from the default
+  std::string max_memory = "4G";       // what one input file may make us allocate
 };
 
 struct FrameArgs {

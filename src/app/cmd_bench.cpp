@@ -162,6 +162,7 @@ int runBench(BenchArgs& args) {
     e["reflector_pixels"] = r.reflector_pixels;
     e["reflected_rays_per_s"] = orNull(double(r.reflector_pixels) * 1000.0 / s.median);
     e["order_rendered"] = r.method->orderRendered(settings.order);
+    if (const std::string why = r.method->fallbackReason(); !why.empty()) e["fallback"] = why;
     nlohmann::json stats = nlohmann::json::object(), per_frame = nlohmann::json::object();
     for (const auto& [k, v] : r.method->stats()) stats[k] = orNull(v);
     // The work of a timed frame (re-captures, rebuilds, warped zexels...), on average.

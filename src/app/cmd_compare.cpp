@@ -165,6 +165,8 @@ MethodReport describeMethod(const CompareRun& run, const std::string& name, cons
   if (m.order_rendered < run.settings.order)
     m.note = fmt::format("order {} only ({} requested)", m.order_rendered, run.settings.order);
   m.stats = method.stats();
+  m.fallback = method.fallbackReason();
+  if (!m.fallback.empty()) m.note = "drawn by envmap: the driver refused it (" + m.fallback + ")";
   return m;
 }
 

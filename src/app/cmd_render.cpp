@@ -99,9 +99,11 @@ int runRender(RenderArgs& args) {
   }
   if (mp4) encodeMp4(ffmpeg, framePattern(frame_name, args.frames), args.fps, args.output);
   int order = method->orderRendered(settings.order);
+  const std::string fallback = method->fallbackReason();
   const std::string order_text =
-      fmt::format("order {}{}", order,
-                  order < settings.order ? fmt::format(", {} requested", settings.order) : "");
+      fmt::format("order {}{}{}", order,
+                  order < settings.order ? fmt::format(", {} requested", settings.order) : "",
+                  fallback.empty() ? "" : ", drawn by envmap: the driver refused it");
   if (args.frames == 1)
     spdlog::info("{}: {} on {} at {}x{} in {:.1f} ms ({})", args.output, args.method, scene.name,
                  size.x, size.y, first_ms, order_text);

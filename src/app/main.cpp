@@ -6,12 +6,14 @@
 
 #include "app/commands.h"
 #include "core/error.h"
+#include "core/interrupt.h"
 
 int main(int argc, char** argv) {
   using namespace mirage;
   // Logs go to stderr so that stdout carries only results (`mirage scenes`).
   spdlog::set_default_logger(spdlog::stderr_color_mt("mirage"));
   spdlog::set_pattern("mirage: %^%l%$: %v");
+  installInterruptHandlers();
 
   CLI::App app{"mirage: mirror reflections at interactive rates, measured against a ray tracer"};
   app.require_subcommand(1);
@@ -49,6 +51,9 @@ int main(int argc, char** argv) {
   try {
     for (const app::Command& c : commands)
       if (c.app->parsed()) return c.run();
+  } catch (const Interrupted& e) {
+    std::fprintf(stderr, "mirage: %s\n", e.what());
+    return int(e.code());
   } catch (const Error& e) {
     std::fprintf(stderr, "mirage: error: %s\n", e.what());
     return int(e.code());

@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -11,6 +12,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/interrupt.h"
 
 namespace mirage::app {
 
@@ -80,6 +82,13 @@ void encodeMp4(const std::string& ffmpeg, const std::string& pattern, double fps
       "-vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' {} > {} 2>&1",
       shellQuote(ffmpeg), fps, shellQuote(pattern), shellQuote(temp), shellQuote(log));
   const int status = std::system(command.c_str());
+  // Ctrl-C reaches ffmpeg (and its shell) too; std::system ignores it in mirage meanwhile.
+  checkInterrupt();
+  if (WIFSIGNALED(status) && (WTERMSIG(status) == SIGINT || WTERMSIG(status) == SIGTERM))
+    throw Interrupted(WTERMSIG(status));
+  if (WIFEXITED(status) &&
+      (WEXITSTATUS(status) == 128 + SIGINT || WEXITSTATUS(status) == 128 + SIGTERM))
+    throw Interrupted(WEXITSTATUS(status) - 128);
   std::string message;
   try {
     message = readFile(log);

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "core/error.h"
+#include "core/interrupt.h"
 
 namespace mirage {
 
@@ -28,10 +29,12 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   std::string name =
       fmt::format(".{}.tmp.{}{}", p.stem().string(), uniqueSuffix(), p.extension().string());
   temp_path_ = (p.parent_path() / name).string();
+  registerTemporaryFile(temp_path_.c_str());
 }
 
 AtomicFile::~AtomicFile() {
   if (!committed_) std::remove(temp_path_.c_str());
+  unregisterTemporaryFile(temp_path_.c_str());
 }
 
 void AtomicFile::commit() {

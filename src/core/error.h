@@ -37,10 +37,18 @@ class NoOpenGLError : public Error {
   explicit NoOpenGLError(const std::string& message) : Error(ExitCode::kNoOpenGL, message) {}
 };
 
-// Anything else: a driver failure, a shader that does not compile, an I/O error on output.
+// Anything else: a driver failure, an I/O error on output, a bug of ours.
 class RuntimeError : public Error {
  public:
   explicit RuntimeError(const std::string& message) : Error(ExitCode::kFailure, message) {}
+};
+
+// The OpenGL driver refused what a method asked: a shader that does not compile or link, a
+// texture or buffer beyond a driver limit, GPU memory exhausted. The frame renderer answers it by
+// falling back to `envmap` with a warning (methods/method_guard.h).
+class GpuError : public RuntimeError {
+ public:
+  explicit GpuError(const std::string& message) : RuntimeError(message) {}
 };
 
 template <typename... Args>
@@ -51,6 +59,11 @@ template <typename... Args>
 template <typename... Args>
 [[noreturn]] void throwRuntime(fmt::format_string<Args...> format, Args&&... args) {
   throw RuntimeError(fmt::format(format, std::forward<Args>(args)...));
+}
+
+template <typename... Args>
+[[noreturn]] void throwGpu(fmt::format_string<Args...> format, Args&&... args) {
+  throw GpuError(fmt::format(format, std::forward<Args>(args)...));
 }
 
 }  // namespace mirage

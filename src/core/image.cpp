@@ -12,7 +12,10 @@
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+#include <spdlog/spdlog.h>
+
 #include "core/atomic_file.h"
+#include "core/memory_cap.h"
 #include "core/radiance_check.h"
 
 namespace mirage {
@@ -22,13 +25,36 @@ namespace {
 // Refuse images whose header claims more than this, before allocating anything.
 constexpr int64_t kMaxImageSide = 32768;
 constexpr int64_t kMaxImagePixels = int64_t(1) << 27;  // 134M pixels = 2 GiB of RGBA float
+// What decoding costs per pixel at its peak: the decoder's buffer (OpenEXR's half RGBA, 8 bytes;
+// stb's float or 16-bit RGBA and its row buffers, up to 16) plus mirage's float RGBA (16).
+constexpr uint64_t kExrBytesPerPixel = 8 + 16;
+constexpr uint64_t kStbBytesPerPixel = 16 + 16;
 
-void checkImageSize(const std::string& name, int64_t w, int64_t h) {
+void checkImageSize(const std::string& name, int64_t w, int64_t h, uint64_t bytes_per_pixel) {
   if (w <= 0 || h <= 0 || w > kMaxImageSide || h > kMaxImageSide || w * h > kMaxImagePixels)
     throwInput(
         "{}: image size {}x{} is outside the supported range (1..{} per side, at most {} "
         "pixels)",
         name, w, h, kMaxImageSide, kMaxImagePixels);
+  checkAllocation(name, fmt::format("decoding its {}x{} pixels", w, h),
+                  uint64_t(w) * uint64_t(h) * bytes_per_pixel);
+}
+
+// Float images may hold NaN and infinities, which would spread through every filter and metric
+// they touch: NaN and -Inf become 0, +Inf the largest half float (65504), with one warning.
+void sanitizeFloatPixels(const std::string& name, Image& image) {
+  size_t replaced = 0;
+  for (vec4& p : image.pixels())
+    for (int c = 0; c < 4; ++c)
+      if (!std::isfinite(p[c])) {
+        p[c] = p[c] > 0.0f ? 65504.0f : 0.0f;
+        ++replaced;
+      }
+  if (replaced > 0)
+    spdlog::warn(
+        "{}: {} non-finite channel values (NaN or infinite) replaced: NaN and -Inf by 0, "
+        "+Inf by 65504",
+        name, replaced);
 }
 
 const std::array<float, 256>& srgbTable() {
@@ -66,7 +92,7 @@ Image readExr(const std::string& name, Imf::IStream& stream) {
     Imath::Box2i window = file.dataWindow();
     int64_t w = int64_t(window.max.x) - window.min.x + 1;
     int64_t h = int64_t(window.max.y) - window.min.y + 1;
-    checkImageSize(name, w, h);
+    checkImageSize(name, w, h, kExrBytesPerPixel);
     Imf::Array2D<Imf::Rgba> pixels(h, w);
     file.setFrameBuffer(&pixels[0][0] - window.min.x - window.min.y * w, 1, size_t(w));
     file.readPixels(window.min.y, window.max.y);
@@ -76,6 +102,7 @@ Image readExr(const std::string& name, Imf::IStream& stream) {
         const Imf::Rgba& p = pixels[y][x];
         image(x, y) = vec4(float(p.r), float(p.g), float(p.b), float(p.a));
       }
+    sanitizeFloatPixels(name, image);
     return image;
   } catch (const InputError&) {
     throw;
@@ -91,6 +118,7 @@ Image fromStb(const std::string& name, void* data, int w, int h, bool is_float, 
     const float* f = static_cast<const float*>(data);
     for (size_t i = 0; i < image.pixelCount(); ++i)
       image.data()[i] = vec4(f[4 * i], f[4 * i + 1], f[4 * i + 2], f[4 * i + 3]);
+    sanitizeFloatPixels(name, image);
   } else {
     const unsigned char* b = static_cast<const unsigned char*>(data);
     const auto& table = srgbTable();
@@ -132,7 +160,7 @@ Image readImageFromMemory(const std::string& name, const void* data, size_t size
   if (!stbi_info_from_memory(buffer, int(size), &w, &h, &channels))
     throwInput("{}: not a readable image ({}); supported: PNG, JPEG, TGA, BMP, HDR, EXR", name,
                stbi_failure_reason());
-  checkImageSize(name, w, h);
+  checkImageSize(name, w, h, kStbBytesPerPixel);
   if (stbi_is_hdr_from_memory(buffer, int(size))) {
     checkRadianceScanlines(name, buffer, size);
     float* f = stbi_loadf_from_memory(buffer, int(size), &w, &h, &channels, 4);

@@ -296,6 +296,7 @@ std::string metricsJson(const CompareReport& r) {
     e["first_frame_ms"] = number(m.first_ms);
     e["order_rendered"] = m.order_rendered;
     if (!m.note.empty()) e["note"] = m.note;
+    if (!m.fallback.empty()) e["fallback"] = m.fallback;
     nlohmann::json stats = nlohmann::json::object();
     for (const auto& [k, v] : m.stats) stats[k] = number(v);
     e["stats"] = stats;

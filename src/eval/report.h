@@ -27,6 +27,7 @@ struct MethodReport {
   double first_ms = 0.0;   // the first frame, captures and builds included
   int order_rendered = 0;  // reflection order the method produced
   std::string note;        // e.g. "order 1 only"
+  std::string fallback;    // why envmap drew in its place (the driver refused it), or empty
   std::map<std::string, double> stats;
   std::string image;  // file names relative to the report directory
   std::string error_image;

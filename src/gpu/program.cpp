@@ -21,8 +21,8 @@ Handle<ShaderTraits> compileStage(GLenum stage, const std::string& path,
     glGetShaderiv(shader.id(), GL_INFO_LOG_LENGTH, &length);
     std::string log(size_t(std::max(length, 1)), '\0');
     glGetShaderInfoLog(shader.id(), length, nullptr, log.data());
-    throwRuntime("shader '{}' does not compile:\n{}", path,
-                 annotateShaderLog(log.c_str(), source.files));
+    throwGpu("shader '{}' does not compile:\n{}", path,
+             annotateShaderLog(log.c_str(), source.files));
   }
   return shader;
 }
@@ -39,7 +39,7 @@ Handle<ProgramTraits> link(const std::vector<GLuint>& shaders, const std::string
     glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &length);
     std::string log(size_t(std::max(length, 1)), '\0');
     glGetProgramInfoLog(program.id(), length, nullptr, log.data());
-    throwRuntime("program '{}' does not link:\n{}", what, log.c_str());
+    throwGpu("program '{}' does not link:\n{}", what, log.c_str());
   }
   return program;
 }

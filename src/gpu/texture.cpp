@@ -8,15 +8,50 @@
 namespace mirage::gpu {
 
 namespace {
-void checkSize(int width, int height, int layers) {
+
+// Bytes per texel of the formats mirage allocates (16 for any other: an upper bound).
+uint64_t texelBytes(GLenum format) {
+  switch (format) {
+    case GL_R32F:
+    case GL_R32UI:
+    case GL_DEPTH_COMPONENT32F:
+    case GL_RGBA8:
+      return 4;
+    case GL_RG32UI:
+    case GL_RGBA16F:
+      return 8;
+    default:
+      return 16;
+  }
+}
+
+// The driver's limits, checked before anything is allocated: a method asking past them gets a
+// GpuError naming the limit, and the frame renderer falls back to envmap.
+void checkSize(GLenum target, int width, int height, int layers) {
+  const bool cube = target == GL_TEXTURE_CUBE_MAP || target == GL_TEXTURE_CUBE_MAP_ARRAY;
   GLint max_size = 0, max_layers = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+  glGetIntegerv(cube ? GL_MAX_CUBE_MAP_TEXTURE_SIZE : GL_MAX_TEXTURE_SIZE, &max_size);
   glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_layers);
   if (width < 1 || height < 1 || width > max_size || height > max_size)
-    throwInput("texture size {}x{} is outside the driver's range 1..{}", width, height, max_size);
-  if (layers < 1 || layers > max_layers)
-    throwInput("texture layer count {} is outside the driver's range 1..{}", layers, max_layers);
+    throwGpu("texture size {}x{} is beyond the driver's {} ({})", width, height,
+             cube ? "GL_MAX_CUBE_MAP_TEXTURE_SIZE" : "GL_MAX_TEXTURE_SIZE", max_size);
+  const bool array = target == GL_TEXTURE_2D_ARRAY || target == GL_TEXTURE_CUBE_MAP_ARRAY;
+  if (array && (layers < 1 || layers > max_layers))
+    throwGpu("a texture of {} layers is beyond the driver's GL_MAX_ARRAY_TEXTURE_LAYERS ({})",
+             layers, max_layers);
 }
+
+// Large storage may be more than the GPU (or llvmpipe's host memory) holds: the driver says so
+// with GL_OUT_OF_MEMORY, which is asked only for allocations worth asking about.
+void checkAllocated(GLenum format, int width, int height, int layers) {
+  const uint64_t bytes = uint64_t(width) * uint64_t(height) * uint64_t(layers) * texelBytes(format);
+  if (bytes < (uint64_t(256) << 20)) return;
+  if (glGetError() == GL_OUT_OF_MEMORY)
+    throwGpu(
+        "a {}x{}x{} texture ({} MiB) is more than the driver could allocate (GL_OUT_OF_MEMORY)",
+        width, height, layers, bytes >> 20);
+}
+
 }  // namespace
 
 Texture::Texture(GLenum target, GLenum format, ivec2 size, int layers, int levels)
@@ -55,31 +90,35 @@ int Texture::fullMipLevels(int size) {
 }
 
 Texture Texture::create2D(GLenum internal_format, int width, int height, int levels) {
-  checkSize(width, height, 1);
+  checkSize(GL_TEXTURE_2D, width, height, 1);
   Texture t(GL_TEXTURE_2D, internal_format, {width, height}, 1, levels);
   glTextureStorage2D(t.id(), levels, internal_format, width, height);
+  checkAllocated(internal_format, width, height, 1);
   return t;
 }
 
 Texture Texture::create2DArray(GLenum internal_format, int width, int height, int layers,
                                int levels) {
-  checkSize(width, height, layers);
+  checkSize(GL_TEXTURE_2D_ARRAY, width, height, layers);
   Texture t(GL_TEXTURE_2D_ARRAY, internal_format, {width, height}, layers, levels);
   glTextureStorage3D(t.id(), levels, internal_format, width, height, layers);
+  checkAllocated(internal_format, width, height, layers);
   return t;
 }
 
 Texture Texture::createCube(GLenum internal_format, int size, int levels) {
-  checkSize(size, size, 1);
+  checkSize(GL_TEXTURE_CUBE_MAP, size, size, 6);
   Texture t(GL_TEXTURE_CUBE_MAP, internal_format, {size, size}, 6, levels);
   glTextureStorage2D(t.id(), levels, internal_format, size, size);
+  checkAllocated(internal_format, size, size, 6);
   return t;
 }
 
 Texture Texture::createCubeArray(GLenum internal_format, int size, int cubes, int levels) {
-  checkSize(size, size, 6 * cubes);
+  checkSize(GL_TEXTURE_CUBE_MAP_ARRAY, size, size, 6 * cubes);
   Texture t(GL_TEXTURE_CUBE_MAP_ARRAY, internal_format, {size, size}, 6 * cubes, levels);
   glTextureStorage3D(t.id(), levels, internal_format, size, size, 6 * cubes);
+  checkAllocated(internal_format, size, size, 6 * cubes);
   return t;
 }
 

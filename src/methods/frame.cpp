@@ -1,6 +1,8 @@
 #include "methods/frame.h"
 
 #include "core/error.h"
+#include "core/interrupt.h"
+#include "methods/method_guard.h"
 
 namespace mirage {
 
@@ -24,13 +26,24 @@ std::unique_ptr<Method> FrameRenderer::createMethod(const std::string& name,
   // Methods keep a reference to their parameters: store them as long as this renderer lives.
   param_storage_.push_back(
       std::make_unique<ParamValues>(ParamValues::validate(entry.info.params, own, name)));
-  MethodSetup setup{entry.info, *gpu_, *passes_, *param_storage_.back(), settings};
-  return entry.create(setup);
+  const ParamValues& params = *param_storage_.back();
+  if (name == "envmap") return entry.create({entry.info, *gpu_, *passes_, params, settings});
+  // Every other method falls back to envmap (default parameters) when the driver refuses it.
+  settings_storage_.push_back(std::make_unique<FrameSettings>(settings));
+  const FrameSettings& kept = *settings_storage_.back();
+  return std::make_unique<MethodGuard>(
+      name,
+      [&] {
+        return entry.create({entry.info, *gpu_, *passes_, params, kept});
+      },
+      [this, &kept] { return createMethod("envmap", {}, kept); });
 }
 
 void FrameRenderer::render(Method& method, const View& view, float time,
                            const FrameSettings& settings, gpu::FrameTimer* timer,
                            std::map<std::string, double>* counts) {
+  // Every command's frame loop passes here: Ctrl-C stops it between frames.
+  checkInterrupt();
   if (view.size() != target_.size())
     throwRuntime("view size {}x{} differs from the frame size {}x{}", view.size().x, view.size().y,
                  target_.size().x, target_.size().y);

@@ -47,6 +47,7 @@ class FrameRenderer {
   std::unique_ptr<ScenePasses> passes_;
   FrameTarget target_;
   std::vector<std::unique_ptr<ParamValues>> param_storage_;
+  std::vector<std::unique_ptr<FrameSettings>> settings_storage_;  // for methods made later
 };
 
 }  // namespace mirage

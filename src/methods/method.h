@@ -80,6 +80,9 @@ class Method {
   virtual int orderRendered(int requested) const { return std::min(requested, info().max_order); }
   // Counters for reports and tests: captures made, structures built, ...
   virtual std::map<std::string, double> stats() const { return {}; }
+  // Why `envmap` draws in this method's place (the driver refused it: methods/method_guard.h),
+  // or empty.
+  virtual std::string fallbackReason() const { return {}; }
 };
 
 using MethodFactory = std::function<std::unique_ptr<Method>(const MethodSetup&)>;

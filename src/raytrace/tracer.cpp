@@ -4,6 +4,7 @@
 #include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
 
+#include "core/interrupt.h"
 #include "core/progress.h"
 #include "core/timer.h"
 #include "shading/shading.h"
@@ -189,6 +190,7 @@ void RayTracer::renderTiles(const View& view, const TraceSettings& settings,
     for (int ty = range.rows().begin(); ty != range.rows().end(); ++ty)
       for (int tx = range.cols().begin(); tx != range.cols().end(); ++tx) {
         if (settings.cancel && settings.cancel->load(std::memory_order_relaxed)) return;
+        if (interruptRequested()) return;
         Stopwatch phase;
         pending.clear();
         uint64_t primary = 0, reflected = 0;
@@ -260,6 +262,9 @@ void RayTracer::renderTiles(const View& view, const TraceSettings& settings,
         progress.advance();
       }
   });
+  // Ctrl-C: the tiles stopped early; a caller with its own cancel flag (the viewer's background
+  // reference) takes the partial frame and stops itself, any other gets Interrupted.
+  if (!settings.cancel) checkInterrupt();
   result.stats.ms = wall.ms();
   double d = direct_cpu.combine(std::plus<double>()), r = reflect_cpu.combine(std::plus<double>());
   double share = d + r > 0.0 ? d / (d + r) : 1.0;

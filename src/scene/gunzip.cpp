@@ -6,6 +6,7 @@
 #include <zlib.h>
 
 #include "core/error.h"
+#include "core/memory_cap.h"
 
 namespace mirage {
 
@@ -44,8 +45,8 @@ std::string gunzip(const std::string& name, std::string_view bytes, uint64_t max
   for (;;) {
     if (produced == out.size()) {
       if (produced > cap)
-        throwInput("{}: decompresses to more than {} bytes (LoadLimits::max_decompressed_bytes)",
-                   name, max_bytes);
+        throwInput("{}: decompresses to more than {}, what --max-memory allows per file", name,
+                   formatBytes(max_bytes));
       out.resize(size_t(std::min<uint64_t>(cap + 1, uint64_t(out.size()) * 2)));
     }
     // zlib counts in 32-bit unsigned ints: feed at most 1 GiB per call.
@@ -61,8 +62,8 @@ std::string gunzip(const std::string& name, std::string_view bytes, uint64_t max
     in_left -= used;
     produced += out_chunk - zs.avail_out;
     if (produced > cap)
-      throwInput("{}: decompresses to more than {} bytes (LoadLimits::max_decompressed_bytes)",
-                 name, max_bytes);
+      throwInput("{}: decompresses to more than {}, what --max-memory allows per file", name,
+                 formatBytes(max_bytes));
     if (rc == Z_STREAM_END) {
       // Another gzip member may follow (files made with `cat a.gz b.gz`); anything else is
       // trailing padding, which gzip(1) ignores too.

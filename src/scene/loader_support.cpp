@@ -65,6 +65,12 @@ void checkLimits(const std::string& file, const std::string& what, uint64_t vert
   if (triangles > limits.max_triangles)
     throwInput("{}: {} has {} triangles; at most {} are allowed (LoadLimits::max_triangles)", file,
                what, triangles, limits.max_triangles);
+  checkAllocation(file, fmt::format("{} ({} vertices, {} triangles)", what, vertices, triangles),
+                  meshBytes(vertices, triangles), limits.max_bytes);
+}
+
+uint64_t meshBytes(uint64_t vertices, uint64_t triangles) {
+  return saturatingMul(saturatingAdd(saturatingMul(vertices, 48), saturatingMul(triangles, 12)), 2);
 }
 
 int TextureList::get(const std::string& key, Encoding encoding,

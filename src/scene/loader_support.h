@@ -26,8 +26,13 @@ std::string readWholeFile(const std::string& path);
 
 // Throws InputError unless `vertices` and `triangles` are within the limits. `what` says what was
 // counted ("element vertex", "mesh 'body'") for the message.
+// And unless the mesh they make fits in limits.max_bytes (meshBytes).
 void checkLimits(const std::string& file, const std::string& what, uint64_t vertices,
                  uint64_t triangles, const LoadLimits& limits);
+// What a mesh of this many vertices and triangles costs while it is read: positions, normals,
+// texture coordinates and tangents (48 bytes a vertex) and indices (12 bytes a triangle), plus as
+// much again for the readers' staging of the file's own arrays. Saturates instead of wrapping.
+uint64_t meshBytes(uint64_t vertices, uint64_t triangles);
 
 // The model's textures, each decoded once per (key, encoding).
 class TextureList {

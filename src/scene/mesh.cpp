@@ -1,6 +1,7 @@
 #include "scene/mesh.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <tuple>
@@ -72,7 +73,13 @@ void Mesh::validate() const {
   if (!uvs.empty() && uvs.size() != positions.size())
     throwInput("{}: {} texture coordinates for {} vertices", who, uvs.size(), positions.size());
   for (size_t i = 0; i < positions.size(); ++i)
-    if (!isFinite(positions[i])) throwInput("{}: vertex {} has a non-finite position", who, i);
+    if (!isFinite(positions[i]))
+      throwInput("{}: vertex {} has a non-finite position ({}, {}, {}); positions must be finite",
+                 who, i, positions[i].x, positions[i].y, positions[i].z);
+  for (size_t i = 0; i < uvs.size(); ++i)
+    if (!std::isfinite(uvs[i].x) || !std::isfinite(uvs[i].y))
+      throwInput("{}: vertex {} has non-finite texture coordinates ({}, {})", who, i, uvs[i].x,
+                 uvs[i].y);
   const size_t n = positions.size();
   for (size_t i = 0; i < triangles.size(); ++i) {
     const uvec3& t = triangles[i];

@@ -24,6 +24,14 @@ bool assimpReads(const std::string& ext) {
   return importer.IsExtensionSupported(ext);
 }
 
+// A mesh after its node transforms: a transform can overflow a position (a scale of 1e30) or
+// collapse a normal (a scale of 0), which the file's own checks could not see.
+Mesh placed(Mesh mesh) {
+  mesh.validate();
+  loader::repairNormals(mesh);
+  return mesh;
+}
+
 }  // namespace
 
 bool isModelFile(const std::string& path) {
@@ -70,7 +78,7 @@ Mesh loadMesh(const std::string& path, const LoadLimits& limits) {
     if (model.mesh_transform[0] != mat4(1.0f)) m.transform(model.mesh_transform[0]);
     m.name = loader::fileStem(path);
     m.source = path;
-    return m;
+    return placed(std::move(m));
   }
   Mesh out;
   out.name = loader::fileStem(path);
@@ -98,7 +106,7 @@ Mesh loadMesh(const std::string& path, const LoadLimits& limits) {
     if (tangents) out.tangents.insert(out.tangents.end(), m.tangents.begin(), m.tangents.end());
     for (const uvec3& t : m.triangles) out.triangles.push_back(t + uvec3(base));
   }
-  return out;
+  return placed(std::move(out));
 }
 
 }  // namespace mirage

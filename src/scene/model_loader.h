@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/memory_cap.h"
 #include "scene/material.h"
 #include "scene/mesh.h"
 #include "scene/scene.h"
@@ -19,12 +20,13 @@
 namespace mirage {
 
 // Caps on what one file may make mirage allocate (checked against header counts before any
-// allocation; see docs/scene-format.md).
+// allocation; see docs/scene-format.md and docs/reliability.md).
 struct LoadLimits {
   uint64_t max_vertices = 50'000'000;
   uint64_t max_triangles = 100'000'000;
-  // Gzip-compressed files (.ply.gz) may not inflate to more than this many bytes.
-  uint64_t max_decompressed_bytes = uint64_t(4) << 30;
+  // The bytes one file may make us allocate: its mesh (loader::meshBytes) or the inflated bytes of
+  // a gzip stream. The process's --max-memory when the limits are made (core/memory_cap.h).
+  uint64_t max_bytes = maxMemory();
 };
 
 // A model file's content. Formats without materials (PLY, STL) give no materials and

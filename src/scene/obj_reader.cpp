@@ -13,6 +13,7 @@
 // A black Ks gives a white tint: "illum 3" alone means a plain mirror.
 // Everything else is diffuse: albedo Kd times map_Kd (sRGB). map_bump/bump/norm -> normal map.
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -53,16 +54,31 @@ class MtlReader : public tinyobj::MaterialReader {
   std::vector<std::string>& mtl_of_;
 };
 
+// A `v` line's words other than numbers ("nan", "inf"), which tinyobjloader would read as 0.
+bool hasNonNumber(const std::string& text, size_t begin, size_t end) {
+  for (size_t k = begin; k < end && text[k] != '#'; ++k)
+    if (std::isalpha(static_cast<unsigned char>(text[k])) && text[k] != 'e' && text[k] != 'E')
+      return true;
+  return false;
+}
+
 // Counts `v` and `f` lines without parsing them, to hold the limits before tinyobjloader
-// allocates anything.
+// allocates anything, and refuses positions that are not numbers.
 void preScan(const std::string& path, const std::string& text, const LoadLimits& limits) {
-  uint64_t v = 0, f = 0;
-  for (size_t pos = 0; pos < text.size();) {
+  uint64_t v = 0, f = 0, line = 1;
+  for (size_t pos = 0; pos < text.size(); ++line) {
     size_t eol = text.find('\n', pos);
     if (eol == std::string::npos) eol = text.size();
     size_t i = text.find_first_not_of(" \t", pos);
     if (i < eol && i + 1 < eol && (text[i + 1] == ' ' || text[i + 1] == '\t')) {
-      if (text[i] == 'v') ++v;
+      if (text[i] == 'v') {
+        ++v;
+        if (hasNonNumber(text, i + 2, eol))
+          throwInput(
+              "{}: line {}: vertex {} has a non-finite position ('{}'); positions must be "
+              "finite numbers",
+              path, line, v, text.substr(i, std::min<size_t>(eol - i, 80)));
+      }
       if (text[i] == 'f') ++f;
     }
     pos = eol + 1;

@@ -226,6 +226,11 @@ Plan plan(const std::string& name, const Header& h, const LoadLimits& limits) {
         "{}: line {}: element face has {} faces; at most {} triangles are allowed "
         "(LoadLimits::max_triangles)",
         name, p.faces->line, p.faces->count, limits.max_triangles);
+  // A face makes at least one triangle: the header's counts bound what reading will allocate.
+  checkAllocation(name,
+                  fmt::format("line {}: {} vertices and {} faces", p.faces->line, p.vertices->count,
+                              p.faces->count),
+                  loader::meshBytes(p.vertices->count, p.faces->count), limits.max_bytes);
   return p;
 }
 
@@ -293,8 +298,7 @@ Mesh parsePly(const std::string& name, std::string_view data, const LoadLimits& 
 }  // namespace
 
 Mesh readPly(const std::string& name, const std::string& bytes, const LoadLimits& limits) {
-  if (isGzip(bytes))
-    return parsePly(name, gunzip(name, bytes, limits.max_decompressed_bytes), limits);
+  if (isGzip(bytes)) return parsePly(name, gunzip(name, bytes, limits.max_bytes), limits);
   return parsePly(name, bytes, limits);
 }
 

@@ -2,6 +2,7 @@
 // model file) and their keyframed animation.
 #include <algorithm>
 
+#include "scene/loader_support.h"
 #include "scene/model_loader.h"
 #include "scene/procedural.h"
 #include "scene/scene_json_internal.h"
@@ -147,6 +148,9 @@ void applySubdivide(const MeshEntry& entry, Meshes& meshes) {
         "triangles and {} vertices are allowed",
         entry.where, entry.subdivide, triangles, vertices, limits.max_triangles,
         limits.max_vertices);
+  checkAllocation(entry.where,
+                  fmt::format("subdivide = {} ({} triangles)", entry.subdivide, triangles),
+                  loader::meshBytes(vertices, triangles), limits.max_bytes);
   for (Mesh& mesh : meshes)
     for (int round = 0; round < entry.subdivide; ++round) mesh = subdivideMidpoint(mesh);
 }

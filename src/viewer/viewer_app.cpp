@@ -12,6 +12,7 @@
 #include <spdlog/spdlog.h>
 
 #include "core/error.h"
+#include "core/interrupt.h"
 #include "core/timer.h"
 #include "eval/metrics.h"
 #include "viewer/viewer_panel.h"
@@ -103,60 +104,72 @@ int ViewerApp::run() {
   using Clock = std::chrono::steady_clock;
   auto last = Clock::now();
   const bool scripted_run = options_.frames > 0;
-  for (frame_ = 0; !window_.shouldClose(); ++frame_) {
-    glfwPollEvents();
-    const auto now = Clock::now();
-    // A set number of frames steps 1/60 s each, so that a script replays the same everywhere.
-    const double wall = std::chrono::duration<double>(now - last).count();
-    const double seconds = scripted_run ? 1.0 / 60.0 : std::min(wall, 0.25);
-    if (frame_ > 1) {  // the whole last frame: the method's, the output pass, the panel, the swap
-      loop_ms_.push_back(1000.0 * wall);
-      state_.readout.loop_ms +=
-          (frame_ == 2 ? 1.0 : 0.1) * (1000.0 * wall - state_.readout.loop_ms);
+  // Ctrl-C closes the window as Escape does: what was recorded and the report are still written.
+  bool interrupted = false;
+  try {
+    for (frame_ = 0; !window_.shouldClose() && !interruptRequested(); ++frame_) {
+      glfwPollEvents();
+      const auto now = Clock::now();
+      // A set number of frames steps 1/60 s each, so that a script replays the same everywhere.
+      const double wall = std::chrono::duration<double>(now - last).count();
+      const double seconds = scripted_run ? 1.0 / 60.0 : std::min(wall, 0.25);
+      if (frame_ > 1) {  // the whole last frame: the method's, the output pass, the panel, the swap
+        loop_ms_.push_back(1000.0 * wall);
+        state_.readout.loop_ms +=
+            (frame_ == 2 ? 1.0 : 0.1) * (1000.0 * wall - state_.readout.loop_ms);
+      }
+      last = now;
+      handleEvents(frame_);
+      applyRequests();
+      if (frame_ > 0) {
+        state_.clock.advance(seconds);
+        moveCamera(seconds);
+      }
+      const ivec2 size = window_.framebufferSize();
+      if (size.x <= 0 || size.y <= 0) {  // minimised: wait for the window to come back
+        glfwWaitEventsTimeout(0.1);
+        continue;
+      }
+      if (!ensureStage(size)) break;
+      const bool last_frame = scripted_run && frame_ + 1 >= options_.frames;
+      renderFrame(size);
+      updateTruth(size, last_frame);
+      present(size);
+      if (last_frame && !options_.screenshot.empty() && !options_.screenshot_panel)
+        screenshot(size, options_.screenshot);
+      if (state_.screenshot_requested) takeShot(size);
+      ImGui_ImplOpenGL3_NewFrame();
+      ImGui_ImplGlfw_NewFrame();
+      ImGui::NewFrame();
+      drawViewerPanel(scene_, state_);
+      ImGui::Render();
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+      if (last_frame && !options_.screenshot.empty() && options_.screenshot_panel)
+        screenshot(size, options_.screenshot);
+      window_.swapBuffers();
+      if (frame_ == 0) {
+        handles_first_ = gpu::liveHandles();
+        objects_first_ = gpu::glObjects();
+      }
+      handles_last_ = gpu::liveHandles();
+      if (method_made_ && frame_ > 0 && !options_.report.empty())
+        objects_after_switch_.push_back({method_name_, gpu::glObjects()});
+      method_made_ = false;
+      if (last_frame) break;
     }
-    last = now;
-    handleEvents(frame_);
-    applyRequests();
-    if (frame_ > 0) {
-      state_.clock.advance(seconds);
-      moveCamera(seconds);
-    }
-    const ivec2 size = window_.framebufferSize();
-    if (size.x <= 0 || size.y <= 0) {  // minimised: wait for the window to come back
-      glfwWaitEventsTimeout(0.1);
-      continue;
-    }
-    if (!ensureStage(size)) break;
-    const bool last_frame = scripted_run && frame_ + 1 >= options_.frames;
-    renderFrame(size);
-    updateTruth(size, last_frame);
-    present(size);
-    if (last_frame && !options_.screenshot.empty() && !options_.screenshot_panel)
-      screenshot(size, options_.screenshot);
-    if (state_.screenshot_requested) takeShot(size);
-    ImGui_ImplOpenGL3_NewFrame();
-    ImGui_ImplGlfw_NewFrame();
-    ImGui::NewFrame();
-    drawViewerPanel(scene_, state_);
-    ImGui::Render();
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    if (last_frame && !options_.screenshot.empty() && options_.screenshot_panel)
-      screenshot(size, options_.screenshot);
-    window_.swapBuffers();
-    if (frame_ == 0) {
-      handles_first_ = gpu::liveHandles();
-      objects_first_ = gpu::glObjects();
-    }
-    handles_last_ = gpu::liveHandles();
-    if (method_made_ && frame_ > 0 && !options_.report.empty())
-      objects_after_switch_.push_back({method_name_, gpu::glObjects()});
-    method_made_ = false;
-    if (last_frame) break;
+  } catch (const Interrupted&) {
+    interrupted = true;
   }
+  interrupted = interrupted || interruptRequested();
   objects_last_ = gpu::glObjects();
   if (recorder_.recording()) toggleRecording();
   writeReport();
   writeRecordedEvents();
+  if (interrupted) {
+    const Interrupted stop(interruptSignal());
+    spdlog::info("{}", stop.what());
+    return int(stop.code());
+  }
   return 0;
 }
 
@@ -235,6 +248,7 @@ void ViewerApp::renderFrame(ivec2 size) {
   r.render_ms += k * (render - r.render_ms);
   r.gl_handles = gpu::liveHandles().total();
   r.order_rendered = method_->orderRendered(state_.settings.order);
+  r.fallback = method_->fallbackReason();
   if (frame_ % 15 == 0) r.reflector_pixels = countNonZero(renderer_->target().readIds());
   state_.size = size;
 }

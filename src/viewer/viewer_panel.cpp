@@ -133,6 +133,8 @@ void statsSection(const ViewerState& state) {
               r.loop_ms > 0.0 ? 1000.0 / r.loop_ms : 0.0, r.loop_ms);
   ImGui::Text("method %.2f ms: update %.2f, render %.2f", r.frame_ms, r.update_ms, r.render_ms);
   ImGui::Text("order rendered %d, reflector pixels %zu", r.order_rendered, r.reflector_pixels);
+  if (!r.fallback.empty())
+    ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.2f, 1.0f), "drawn by envmap: %s", r.fallback.c_str());
   for (const auto& [name, value] : r.counts) ImGui::Text("%s: %g", name.c_str(), value);
   ImGui::TextDisabled("GL objects held: %ld", r.gl_handles);
 }

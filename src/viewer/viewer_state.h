@@ -20,6 +20,7 @@ struct FrameReadout {
   size_t reflector_pixels = 0;
   long gl_handles = 0;
   int order_rendered = 0;
+  std::string fallback;  // why envmap draws in the method's place, or empty
 };
 
 struct ViewerState {

@@ -47,10 +47,10 @@ TEST(PlyErrors, TruncatedGzip) {
 TEST(PlyErrors, DecompressedSizeIsCapped) {
   std::string gz = test::gzip(asciiCube() + std::string(100000, ' '));
   LoadLimits limits;
-  limits.max_decompressed_bytes = 10000;
+  limits.max_bytes = 10000;
   expectInputError([&] { readPly("bomb.ply.gz", gz, limits); },
-                   {"bomb.ply.gz", "more than 10000 bytes", "max_decompressed_bytes"});
-  limits.max_decompressed_bytes = 1 << 20;
+                   {"bomb.ply.gz", "more than 9.8 KiB", "--max-memory"});
+  limits.max_bytes = 1 << 20;
   EXPECT_EQ(readPly("fine.ply.gz", gz, limits).triangleCount(), 12u);
 }
 

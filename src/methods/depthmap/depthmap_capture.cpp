@@ -41,9 +41,9 @@ void DepthMapCapture::allocate(int maps) {
   GLint max_layers = 0;
   glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_layers);
   if (count * srdm_settings_.domains > max_layers)
-    throwInput(
-        "--srdm-n {} with {} depth maps needs {} texture layers; this OpenGL driver has {} "
-        "(allowed: --srdm-n up to {})",
+    throwGpu(
+        "--srdm-n {} with {} depth maps needs {} texture layers, beyond the driver's "
+        "GL_MAX_ARRAY_TEXTURE_LAYERS ({}: --srdm-n up to {} would fit)",
         srdm_settings_.domains, count, count * srdm_settings_.domains, max_layers,
         max_layers / count);
   const int w = options_.size;

@@ -58,8 +58,9 @@ void KdGpuCull::reserve(gpu::Buffer& buffer, size_t& capacity, size_t count, siz
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &largest);
   const size_t most = size_t(largest) / bytes;
   if (count > most)
-    throwRuntime(
-        "hybrid GPU culling: {} entries exceed the largest storage block ({} bytes); use "
+    throwGpu(
+        "hybrid GPU culling: {} entries exceed the driver's GL_MAX_SHADER_STORAGE_BLOCK_SIZE ({} "
+        "bytes); use "
         "--hybrid-cull-on cpu (it merges leaves) or fewer points",
         count, largest);
   capacity = std::min(most, std::max({kMinCapacity, count + count / 4, capacity}));

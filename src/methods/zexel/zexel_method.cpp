@@ -32,11 +32,11 @@ void checkDriverLimits(const ZexelMapOptions& o) {
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &largest);
   glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &layers);
   if (o.size > largest)
-    throwInput("zexel: --zexel-size {}: beyond this driver's largest texture (allowed 16..{})",
-               o.size, largest);
+    throwGpu("zexel: --zexel-size {} is beyond the driver's GL_MAX_TEXTURE_SIZE ({})", o.size,
+             largest);
   if (o.count > layers)
-    throwInput("zexel: --zexel-maps {}: beyond this driver's array layers (allowed 1..{})", o.count,
-               layers);
+    throwGpu("zexel: --zexel-maps {} is beyond the driver's GL_MAX_ARRAY_TEXTURE_LAYERS ({})",
+             o.count, layers);
 }
 
 // A planar mirror: its maps and this frame's warp of them.

@@ -1,0 +1,57 @@
+#include "methods/method_guard.h"
+
+#include <spdlog/spdlog.h>
+
+#include "core/error.h"
+
+namespace mirage {
+
+MethodGuard::MethodGuard(std::string requested, const Factory& make, Factory fallback)
+    : requested_(std::move(requested)), fallback_(std::move(fallback)) {
+  try {
+    current_ = make();
+  } catch (const GpuError& e) {
+    fallBack(e);
+  }
+}
+
+void MethodGuard::fallBack(const GpuError& error) {
+  if (!reason_.empty())  // envmap itself was refused: nothing simpler is left to draw with
+    throwGpu("method '{}' fell back to 'envmap' ({}), which the driver refused too: {}", requested_,
+             reason_, error.what());
+  reason_ = error.what();
+  spdlog::warn("method '{}' cannot run on this OpenGL driver: {}; drawing with 'envmap' instead",
+               requested_, reason_);
+  current_.reset();  // its GL objects go before envmap makes its own
+  try {
+    current_ = fallback_();
+  } catch (const GpuError& e) {
+    fallBack(e);
+  }
+}
+
+void MethodGuard::update(FrameContext& frame) {
+  try {
+    current_->update(frame);
+  } catch (const GpuError& e) {
+    fallBack(e);
+    current_->update(frame);
+  }
+}
+
+void MethodGuard::render(FrameContext& frame) {
+  try {
+    current_->render(frame);
+  } catch (const GpuError& e) {
+    fallBack(e);
+    // The refused method may have drawn part of the frame: start it again, as the frame renderer
+    // does (the target bound and cleared), with envmap's captures made first.
+    current_->update(frame);
+    frame.target.bind();
+    frame.target.clear();
+    frame.passes.begin(frame.view, frame.settings);
+    current_->render(frame);
+  }
+}
+
+}  // namespace mirage
