@@ -10,9 +10,11 @@
 #include "app/commands.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/process_memory.h"
 #include "core/progress.h"
 #include "core/timer.h"
 #include "eval/metrics.h"
+#include "gpu/object_count.h"
 #include "methods/frame.h"
 
 namespace mirage::app {
@@ -49,6 +51,27 @@ Summary summarize(std::vector<double> v) {
 
 nlohmann::json orNull(double v) {
   return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+
+// What the process holds at a frame: resident memory and GL objects (mirage's handles, and the
+// names GL itself reports), so that a long run shows whether anything grows (the soak check).
+struct Resources {
+  int frame = 0;  // timed frames done
+  double rss_mib = 0.0;
+  long handles = 0, gl_objects = 0;
+};
+
+Resources resourcesAt(int frame) {
+  glFinish();
+  return {frame, residentMiB(), gpu::liveHandles().total(), gpu::glObjects().total()};
+}
+
+// Frames after which resources are recorded: 0, 1, 10, 100, ... and the last.
+bool isCheckpoint(int done, int frames) {
+  if (done == frames) return true;
+  int p = 1;
+  while (p < done) p *= 10;
+  return p == done;
 }
 
 struct Run {
@@ -104,8 +127,9 @@ int runBench(BenchArgs& args) {
     // The CPU reference is timed on as many frames as the budget affords.
     if (!r.method->info().gpu) {
       double per_frame_s = first.ms() / 1000.0 / double(std::max(args.warmup, 1));
-      r.frames =
-          std::clamp(int(args.raytrace_budget_s / std::max(per_frame_s, 1e-6)), 3, args.frames);
+      // Clamped as a double: a budget of 1e9 s affords more frames than an int holds.
+      const double affordable = args.raytrace_budget_s / std::max(per_frame_s, 1e-6);
+      r.frames = int(std::clamp(affordable, 3.0, double(args.frames)));
     }
     r.reflector_pixels = countNonZero(renderer.read().ids);
   }
@@ -115,6 +139,7 @@ int runBench(BenchArgs& args) {
   // A playing scene moves once per frame, before the methods draw it: what every method shares
   // (transforms, deformed vertices, the light) is timed apart from each method's update.
   std::vector<double> scene_ms;
+  std::vector<Resources> resources{resourcesAt(0)};
   for (int f = 0; f < args.frames; ++f) {
     const float time = timeOf(f);
     if (args.fps > 0.0) {
@@ -131,6 +156,7 @@ int runBench(BenchArgs& args) {
       for (const auto& [name, n] : counts) r.counts[name] += n;
       progress.advance();
     }
+    if (isCheckpoint(f + 1, args.frames)) resources.push_back(resourcesAt(f + 1));
   }
 
   nlohmann::json methods = nlohmann::json::object();
@@ -206,6 +232,19 @@ int runBench(BenchArgs& args) {
     j["scene_update_ms"] = {{"min", s.min}, {"median", s.median}, {"p95", s.p95}};
   }
   j["methods"] = methods;
+  nlohmann::json held = nlohmann::json::array();
+  for (const Resources& r : resources)
+    held.push_back({{"frame", r.frame},
+                    {"rss_mib", r.rss_mib},
+                    {"gl_handles", r.handles},
+                    {"gl_objects", r.gl_objects}});
+  j["resources"] = held;
+  const Resources &first = resources.front(), &last = resources.back();
+  spdlog::info(
+      "resources: RSS {:.1f} -> {:.1f} MiB, GL objects {} -> {}, handles {} -> {} "
+      "(frames 0 -> {})",
+      first.rss_mib, last.rss_mib, first.gl_objects, last.gl_objects, first.handles, last.handles,
+      last.frame);
   writeFileAtomic(args.json, j.dump(2) + "\n");
   return 0;
 }

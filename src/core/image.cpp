@@ -15,6 +15,7 @@
 #include <spdlog/spdlog.h>
 
 #include "core/atomic_file.h"
+#include "core/image_header.h"
 #include "core/memory_cap.h"
 #include "core/radiance_check.h"
 
@@ -150,11 +151,19 @@ Image readImageFromMemory(const std::string& name, const void* data, size_t size
                           Encoding encoding) {
   if (size == 0) throwInput("{}: empty image file", name);
   const char* bytes = static_cast<const char*>(data);
+  const auto* header = static_cast<const unsigned char*>(data);
   if (size >= 4 && std::memcmp(bytes, "\x76\x2f\x31\x01", 4) == 0) {
+    // Before OpenEXR reads the header and its offset tables, which an absurd data window makes
+    // fail with only "unexpected end of file".
+    if (auto claimed = claimedExrSize(header, size))
+      checkImageSize(name, claimed->width, claimed->height, kExrBytesPerPixel);
     MemoryStream stream(name, bytes, size);
     return readExr(name, stream);
   }
   if (size > size_t(std::numeric_limits<int>::max())) throwInput("{}: file too large", name);
+  // stb refuses a PNG larger than 2^30 bytes of pixels as "unknown image type": say why.
+  if (auto claimed = claimedPngSize(header, size))
+    checkImageSize(name, claimed->width, claimed->height, kStbBytesPerPixel);
   int w = 0, h = 0, channels = 0;
   auto* buffer = reinterpret_cast<const stbi_uc*>(data);
   if (!stbi_info_from_memory(buffer, int(size), &w, &h, &channels))

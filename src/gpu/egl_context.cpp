@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "gpu/context.h"
 #include "gpu/gl.h"
+#include "gpu/keep_drivers_loaded.h"
 
 namespace mirage::gpu {
 
@@ -58,6 +59,7 @@ std::unique_ptr<EglContext> createOn(EGLDisplay display, bool debug, std::string
     why = fmt::format("eglInitialize failed (0x{:x})", eglGetError());
     return nullptr;
   }
+  keepDriversLoaded();
   if (!eglBindAPI(EGL_OPENGL_API)) {
     why = "the display has no desktop OpenGL API";
     eglTerminate(display);

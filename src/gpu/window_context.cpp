@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include "gpu/gl.h"  // before GLFW: epoxy replaces GL/gl.h
+#include "gpu/keep_drivers_loaded.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -55,6 +56,7 @@ WindowContext::WindowContext(const WindowOptions& options) {
     if (--g_windows == 0) glfwTerminate();
     throw NoOpenGLError("no OpenGL 4.5 core context for a window: " + lastGlfwError());
   }
+  keepDriversLoaded();
   makeCurrent();
   try {
     queryInfo("GLFW window");

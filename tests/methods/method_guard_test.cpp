@@ -29,7 +29,12 @@ class RefusedMethod : public Method {
  public:
   explicit RefusedMethod(FailIn when) : when_(when) {}
   const MethodInfo& info() const override {
-    static const MethodInfo info{"refused", "fails on purpose"};
+    static const MethodInfo info = [] {
+      MethodInfo i;
+      i.name = "refused";
+      i.description = "fails on purpose";
+      return i;
+    }();
     return info;
   }
   void update(FrameContext&) override {
