@@ -295,7 +295,10 @@ std::string tableMessage(std::string out, const std::string& dir) {
   const size_t error = out.rfind("mirage: error: ");
   if (error != std::string::npos) out = out.substr(error);
   out = out.substr(0, out.find('\n'));
-  return replaceAll(out, "|", "\\|");
+  std::string printable;  // the input's own bytes may be echoed: keep the table UTF-8
+  for (unsigned char c : out)
+    printable += c < 0x80 ? std::string(1, char(c)) : fmt::format("\\x{:02x}", c);
+  return replaceAll(printable, "|", "\\|");
 }
 
 TEST(HostileInputs, EachExitsTwoWithAMessageNamingWhatIsWrong) {

@@ -16,6 +16,7 @@
 
 #include "core/atomic_file.h"
 #include "core/interrupt.h"
+#include "support/gl_test.h"
 #include "support/test_files.h"
 
 extern char** environ;
@@ -123,6 +124,23 @@ TEST(Interrupt, SigtermStopsCompareAndLeavesOnlyWholeFiles) {
       EXPECT_EQ(name.find(".tmp."), std::string::npos) << name;
       EXPECT_NE(name, "metrics.json");
     }
+}
+
+// The viewer takes Ctrl-C as a close request: what it recorded and its report are written.
+TEST(ViewUnderXvfb, CtrlCClosesTheWindowAndKeepsTheRecordings) {
+  MIRAGE_NEED_DISPLAY();
+  const fs::path dir = testTempDir("interrupt-view");
+  const Stopped s = runAndSignal(
+      {"view", "--scene", "sphere-over-checker", "--method", "envmap", "--size", "160x120",
+       "--frames", "0", "--record-path", (dir / "path.camera.json").string(), "--report",
+       (dir / "report.json").string()},
+      SIGINT, std::chrono::milliseconds(3000), dir / "log.txt");
+  EXPECT_EQ(s.code, 130) << s.output;
+  EXPECT_NE(s.output.find("interrupted by SIGINT"), std::string::npos) << s.output;
+  EXPECT_LT(s.seconds_after_signal, 20.0);
+  EXPECT_TRUE(fs::is_regular_file(dir / "path.camera.json")) << s.output;
+  EXPECT_TRUE(fs::is_regular_file(dir / "report.json")) << s.output;
+  for (const std::string& name : filesIn(dir)) EXPECT_EQ(name.find(".tmp."), std::string::npos);
 }
 
 }  // namespace
