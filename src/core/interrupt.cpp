@@ -1,5 +1,6 @@
 #include "core/interrupt.h"
 
+#include <atomic>
 #include <csignal>
 #include <cstring>
 
@@ -55,16 +56,9 @@ void installInterruptHandlers() {
 bool interruptRequested() {
   return g_requested.load(std::memory_order_relaxed);
 }
-const std::atomic<bool>& interruptFlag() {
-  return g_requested;
-}
-
-int interruptSignal() {
-  return g_signal.load() ? g_signal.load() : SIGINT;
-}
 
 void checkInterrupt() {
-  if (interruptRequested()) throw Interrupted(interruptSignal());
+  if (interruptRequested()) throw Interrupted(g_signal.load() ? g_signal.load() : SIGINT);
 }
 
 void requestInterrupt(int signal) {

@@ -5,8 +5,6 @@
 // temporary files still open and exits at once. Both exit with 128 + the signal's number.
 #pragma once
 
-#include <atomic>
-
 #include "core/error.h"
 
 namespace mirage {
@@ -24,10 +22,6 @@ class Interrupted : public Error {
 void installInterruptHandlers();
 // Whether a signal asked us to stop (relaxed load: safe in any thread, any loop).
 bool interruptRequested();
-// The flag itself, for code that takes a cancel flag (TraceSettings::cancel).
-const std::atomic<bool>& interruptFlag();
-// The signal that asked us to stop (SIGINT when requestInterrupt gave none).
-int interruptSignal();
 // Throws Interrupted if a signal asked us to stop.
 void checkInterrupt();
 // Raises the flag as a signal would (tests).

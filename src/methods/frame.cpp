@@ -56,9 +56,7 @@ void FrameRenderer::render(Method& method, const View& view, float time,
   method.update(frame);
   // The clear is part of drawing the frame, not of bringing captures up to date.
   frame.beginPart(gpu::Part::kDirect);
-  target_.bind();
-  target_.clear();
-  passes_->begin(view, settings);
+  frame.beginDrawing();
   method.render(frame);
   if (timer) timer->endFrame();
   if (counts) *counts = frameCounts(method.info(), before, method.stats());

@@ -62,6 +62,13 @@ struct FrameContext {
   void beginPart(gpu::Part part) const {
     if (timer) timer->beginPart(part);
   }
+  // What Method::render starts from: the target bound and cleared, the shared passes set up for
+  // this view (the frame renderer before every render, the method guard when it redraws).
+  void beginDrawing() const {
+    target.bind();
+    target.clear();
+    passes.begin(view, settings);
+  }
 };
 
 class Method {

@@ -44,12 +44,10 @@ void MethodGuard::render(FrameContext& frame) {
     current_->render(frame);
   } catch (const GpuError& e) {
     fallBack(e);
-    // The refused method may have drawn part of the frame: start it again, as the frame renderer
-    // does (the target bound and cleared), with envmap's captures made first.
+    // The refused method may have drawn part of the frame: start it again, with envmap's
+    // captures made first.
     current_->update(frame);
-    frame.target.bind();
-    frame.target.clear();
-    frame.passes.begin(frame.view, frame.settings);
+    frame.beginDrawing();
     current_->render(frame);
   }
 }

@@ -104,8 +104,8 @@ int ViewerApp::run() {
   using Clock = std::chrono::steady_clock;
   auto last = Clock::now();
   const bool scripted_run = options_.frames > 0;
-  // Ctrl-C closes the window as Escape does: what was recorded and the report are still written.
-  bool interrupted = false;
+  // Ctrl-C closes the window as Escape does: what was recorded and the report are still written,
+  // then Interrupted goes on to main (exit 128 + the signal).
   try {
     for (frame_ = 0; !window_.shouldClose() && !interruptRequested(); ++frame_) {
       glfwPollEvents();
@@ -157,19 +157,13 @@ int ViewerApp::run() {
       method_made_ = false;
       if (last_frame) break;
     }
-  } catch (const Interrupted&) {
-    interrupted = true;
+  } catch (const Interrupted&) {  // mid-frame; interruptRequested() says so below
   }
-  interrupted = interrupted || interruptRequested();
   objects_last_ = gpu::glObjects();
   if (recorder_.recording()) toggleRecording();
   writeReport();
   writeRecordedEvents();
-  if (interrupted) {
-    const Interrupted stop(interruptSignal());
-    spdlog::info("{}", stop.what());
-    return int(stop.code());
-  }
+  checkInterrupt();
   return 0;
 }
 
