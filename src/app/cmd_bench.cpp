@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cstdlib>
 
-#include <malloc.h>
-
 #include <spdlog/spdlog.h>
 #include <nlohmann/json.hpp>
 
@@ -65,8 +63,8 @@ struct Resources {
 
 Resources resourcesAt(int frame) {
   glFinish();
-  // Give freed heap back first (glibc keeps it otherwise): what remains is memory held.
-  malloc_trim(0);
+  // Give freed memory back first (allocators keep it otherwise): what remains is memory held.
+  releaseFreeMemory();
   return {frame, residentMiB(), gpu::liveHandles().total(), gpu::glObjects().total()};
 }
 
@@ -221,6 +219,7 @@ int runBench(BenchArgs& args) {
   j["size"] = {size.x, size.y};
   j["device"] = context->info().renderer + " (" + context->info().version + ")";
   j["cpu"] = cpuDescription();
+  j["allocator"] = processAllocator();
   const char* lp = std::getenv("LP_NUM_THREADS");
   j["lp_num_threads"] = lp ? nlohmann::json(lp) : nlohmann::json(nullptr);
   j["triangles"] = scene.triangleCount();

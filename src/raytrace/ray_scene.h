@@ -1,6 +1,7 @@
 // The scene in Embree 3: one triangle geometry per instance, in world space at a given time
-// (geometry ID = instance index). Rebuilt when the scene moves; the build is timed apart from
-// tracing so benchmarks can report it separately.
+// (geometry ID = instance index). The Embree scene lives as long as the RayScene; when the scene
+// moves, the moved instances' vertices are rewritten and the BVH built again. The build is timed
+// apart from tracing so benchmarks can report it separately.
 #pragma once
 
 #include <embree3/rtcore.h>
@@ -25,9 +26,9 @@ class RayScene {
   RayScene(const RayScene&) = delete;
   RayScene& operator=(const RayScene&) = delete;
 
-  // Brings the scene to `time`: rebuilds the BVH when an instance moved or a surface deformed
-  // since the last build and returns the build time in ms; returns 0 when the triangles are the
-  // same (the light may still have moved).
+  // Brings the scene to `time`: rewrites the vertices of the instances that moved or deformed
+  // since the last build, rebuilds the BVH and returns the build time in ms; returns 0 when the
+  // triangles are the same (the light may still have moved).
   double build(float time);
   float builtTime() const { return time_; }
   const mat4& instanceMatrix(int instance) const { return matrices_[size_t(instance)]; }
@@ -55,6 +56,7 @@ class RayScene {
   const Scene& scene_;
   RTCDevice device_ = nullptr;
   RTCScene rtc_scene_ = nullptr;
+  std::vector<RTCGeometry> geometries_;  // geometry ID = instance index
   std::vector<mat4> matrices_;
   std::vector<mat3> normal_matrices_, linear_parts_;
   std::vector<std::vector<vec3>> world_;
