@@ -12,6 +12,7 @@
 #include "methods/none/none_method.h"
 #include "methods/planar/planar_method.h"
 #include "methods/raytrace/raytrace_method.h"
+#include "methods/ssr/ssr_method.h"
 #include "methods/zexel/zexel_method.h"
 
 namespace mirage {
@@ -21,7 +22,7 @@ const std::vector<MethodEntry>& methodRegistry() {
       noneMethodEntry(),      envmapInfiniteMethodEntry(), envmapMethodEntry(),
       envmapBoxMethodEntry(), billboardMethodEntry(),      depthmapMethodEntry(),
       hybridMethodEntry(),    planarMethodEntry(),         zexelMethodEntry(),
-      raytraceMethodEntry(),
+      ssrMethodEntry(),       raytraceMethodEntry(),
   };
   return registry;
 }

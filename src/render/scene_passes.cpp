@@ -50,7 +50,11 @@ void ScenePasses::drawBackground() const {
 }
 
 void ScenePasses::drawDiffuse(int exclude) const {
-  diffuse_.use();
+  drawDiffuseWith(diffuse_, exclude);
+}
+
+void ScenePasses::drawDiffuseWith(const gpu::Program& program, int exclude) const {
+  program.use();
   const Scene& s = scene_.scene();
   for (int i = 0; i < int(s.instances.size()); ++i)
     if (i != exclude && !s.isReflector(i)) scene_.draw(i);

@@ -35,6 +35,8 @@ class ScenePasses {
   void drawBackground() const;
   // All diffuse instances except `exclude`.
   void drawDiffuse(int exclude = -1) const;
+  // The same with another program (a G-buffer pass).
+  void drawDiffuseWith(const gpu::Program& program, int exclude = -1) const;
   // The given diffuse instances only.
   void drawDiffuseInstances(std::span<const int> instances) const;
   // All reflector instances except `exclude`, with a method's reflector program.

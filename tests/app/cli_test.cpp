@@ -85,6 +85,14 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"render --scene ripple-pool --method envmap --camera-path /no/such.json -o x.png",
                  "/no/such.json"},
         BadInput{"bench --scene ripple-pool --fps -2 --json b.json", "0..1000"},
+        BadInput{"render --scene mirror-room --method ssr --ssr-steps 4 -o x.png", "8..4096"},
+        BadInput{"render --scene mirror-room --method ssr --ssr-thickness 0 -o x.png",
+                 "0.0001..1"},
+        BadInput{"render --scene mirror-room --method ssr --ssr-thickness inf -o x.png",
+                 "0.0001..1"},
+        BadInput{"render --scene mirror-room --method ssr --ssr-edge-fade 0.7 -o x.png", "0..0.5"},
+        BadInput{"render --scene mirror-room --method ssr --ssr-fallback planar -o x.png",
+                 "envmap|envmap-box"},
         BadInput{"frobnicate", "frobnicate"}));
 
 TEST(Cli, HelpExitsZero) {

@@ -7,4 +7,5 @@ void main() {
                              frame.light_color.rgb, frame.ambient.rgb);
   out_color = vec4(color, eye_distance());
   out_id = 0u;
+  write_gbuffer(false);
 }

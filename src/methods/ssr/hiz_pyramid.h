@@ -1,0 +1,31 @@
+// Method `ssr`: the hierarchical-Z pyramid of a depth buffer — a min-depth mip chain, so that a
+// reflected ray's march can skip a whole 2^l x 2^l cell whose nearest depth it stays in front
+// of (ssr_march_shared.h). The pyramid is a power of two a side (pixels past the screen hold 1,
+// "nothing"), so that a cell of level l covers pixels [2^l c, 2^l (c + 1)) on every level.
+#pragma once
+
+#include "gpu/program.h"
+#include "gpu/texture.h"
+
+namespace mirage {
+
+class HiZPyramid {
+ public:
+  HiZPyramid();
+
+  // Builds every level from `depth` (a depth texture of `screen` pixels) on the GPU.
+  void build(const gpu::Texture& depth, ivec2 screen);
+
+  const gpu::Texture& texture() const { return texture_; }
+  int levels() const { return texture_.levels(); }
+  ivec2 screen() const { return screen_; }
+  // The pyramid's side lengths at level 0: `screen` rounded up to powers of two.
+  static ivec2 paddedSize(ivec2 screen);
+
+ private:
+  gpu::Program program_;
+  gpu::Texture texture_;
+  ivec2 screen_{0};
+};
+
+}  // namespace mirage

@@ -1,0 +1,100 @@
+// Method `ssr`: screen-space reflections. Each reflector pixel marches its reflected ray through
+// the hierarchical-Z pyramid of the direct view's depth (ssr_march_shared.h) and, where it hits
+// a surface seen from its front, shows the direct view's colour there; its weight fades to 0
+// near the screen's edges. Rays that leave the screen, hit nothing, hit a back face or run out
+// of steps get weight 0. The result is blended over the fallback method's frame by that weight
+// (render/shaders/reflector.glsl, MIRAGE_REFLECTION_COVERAGE).
+layout(early_fragment_tests) in;  // count only the pixels that are shown
+
+#define MIRAGE_REFLECTION_COVERAGE 1
+#include "render/shaders/reflector.glsl"
+#include "methods/ssr/ssr_shared.h"
+
+layout(binding = MIRAGE_UNIT_SSR_HIZ) uniform sampler2D u_hiz;
+layout(binding = MIRAGE_UNIT_SSR_COLOR) uniform sampler2D u_color;
+layout(binding = MIRAGE_UNIT_SSR_NORMAL) uniform sampler2D u_normal;
+layout(std430, binding = MIRAGE_BIND_SSR_COUNTS) buffer SsrCounts {
+  uint ssr_counts[MIRAGE_SSR_COUNTS];
+};
+
+uniform ivec2 u_size;       // the screen in pixels
+uniform int u_levels;       // levels of the pyramid
+uniform int u_max_steps;    // --ssr-steps
+uniform float u_thickness;  // --ssr-thickness, in view-depth units
+uniform float u_edge_fade;  // --ssr-edge-fade: the fade's width, a fraction of the shorter side
+uniform float u_near;
+uniform float u_far;
+uniform vec3 u_forward;  // the view direction (world)
+
+float ssr_hiz(int level, int x, int y) { return texelFetch(u_hiz, ivec2(x, y), level).r; }
+
+#include "methods/ssr/ssr_march_shared.h"
+
+float g_coverage = 0.0f;
+float reflection_coverage() { return g_coverage; }
+
+vec3 to_window(vec3 world) {
+  vec4 clip = frame.view_proj * vec4(world, 1.0f);
+  vec3 ndc = clip.xyz / clip.w;
+  return vec3((ndc.xy * 0.5f + 0.5f) * vec2(u_size), ndc.z * 0.5f + 0.5f);
+}
+
+vec3 to_world(vec3 window) {
+  vec4 ndc = vec4(window.xy / vec2(u_size) * 2.0f - 1.0f, window.z * 2.0f - 1.0f, 1.0f);
+  vec4 world = frame.inv_view_proj * ndc;
+  return world.xyz / world.w;
+}
+
+void count(int which) { atomicAdd(ssr_counts[which], 1u); }
+
+vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflector) {
+  count(MIRAGE_SSR_PIXELS);
+  g_coverage = 0.0f;
+  // The ray in the world, cut where it would cross the near plane (towards the eye) or pass
+  // the far plane, then projected and cut at the screen's edges.
+  float depth0 = dot(position - frame.eye.xyz, u_forward);
+  float rate = dot(direction, u_forward);
+  float length_max = 2.0f * u_far;
+  if (rate < 0.0f) length_max = min(length_max, (depth0 - 1.001f * u_near) / -rate);
+  if (rate > 0.0f) length_max = min(length_max, (0.999f * u_far - depth0) / rate);
+  vec3 from = gl_FragCoord.xyz;
+  vec3 to = to_window(position + max(length_max, 0.0f) * direction);
+  vec2 d = to.xy - from.xy;
+  float t_screen = 1.0f;
+  vec2 lo = vec2(0.0f), hi = vec2(u_size) - 1.0e-3f;
+  if (d.x > 0.0f) t_screen = min(t_screen, (hi.x - from.x) / d.x);
+  if (d.x < 0.0f) t_screen = min(t_screen, (lo.x - from.x) / d.x);
+  if (d.y > 0.0f) t_screen = min(t_screen, (hi.y - from.y) / d.y);
+  if (d.y < 0.0f) t_screen = min(t_screen, (lo.y - from.y) / d.y);
+  t_screen = max(t_screen, 0.0f);
+  to = from + t_screen * (to - from);
+
+  ivec2 pixel;
+  int steps;
+  float t = ssr_march(from, to, u_levels, u_max_steps, u_thickness, u_near, u_far, pixel, steps);
+  float weight_fallback = 1.0f;
+  if (t < 0.0f) {
+    if (steps >= u_max_steps)
+      count(MIRAGE_SSR_OUT_OF_STEPS);
+    else if (t_screen < 1.0f)
+      count(MIRAGE_SSR_OFF_SCREEN);
+    else
+      count(MIRAGE_SSR_NO_HIT);
+  } else if (dot(texelFetch(u_normal, pixel, 0).xyz, direction) > 0.0f) {
+    count(MIRAGE_SSR_BACK_FACE);
+  } else {
+    float exit_t = ssr_cell_exit(from, to, t, 1.0f);
+    float refined = ssr_refine(from, to, t, exit_t, u_size, 6);
+    vec3 at = from + refined * (to - from);
+    float edge = min(min(at.x, float(u_size.x) - at.x), min(at.y, float(u_size.y) - at.y));
+    float fade_width = u_edge_fade * float(min(u_size.x, u_size.y));
+    g_coverage = fade_width > 0.0f ? clamp(edge / fade_width, 0.0f, 1.0f) : 1.0f;
+    count(g_coverage >= 1.0f ? MIRAGE_SSR_HITS : MIRAGE_SSR_FADED);
+    weight_fallback = 1.0f - g_coverage;
+    atomicAdd(ssr_counts[MIRAGE_SSR_FALLBACK_WEIGHT], uint(weight_fallback * 1024.0f + 0.5f));
+    vec3 hit = to_world(vec3(at.xy, ssr_bilinear_depth(at.xy, u_size)));
+    return vec4(textureLod(u_color, at.xy / vec2(u_size), 0.0f).rgb, length(hit - position));
+  }
+  atomicAdd(ssr_counts[MIRAGE_SSR_FALLBACK_WEIGHT], 1024u);
+  return vec4(0.0f, 0.0f, 0.0f, MISS_DISTANCE);
+}

@@ -1,0 +1,130 @@
+// Method `ssr`: the reflected ray's march through the hierarchical-Z pyramid of the depth
+// buffer, shared by the reflection shader and the tests (which run it against a brute-force
+// march over every pixel). The includer defines, before including this file:
+//   float ssr_hiz(int level, int x, int y);  // the nearest window depth of cell (x, y) of
+//                                            // `level` (level 0: the depth buffer; >= 1: none)
+//
+// The ray is a segment in screen space: x, y in window pixels (bottom-left origin, as
+// gl_FragCoord and the pyramid's texels), z the window depth, which is affine in screen space along
+// a projected line — so the march steps in 2D and reads z linearly. Level l of the pyramid has
+// cells of 2^l pixels, each the minimum of the (up to) four cells below it. A cell is skipped whole
+// when the ray's deepest point inside it is still in front of the cell's nearest depth: nothing in
+// it can be hit, and the march climbs a level; otherwise it descends, down to single pixels, where
+// the hit test is made. It finds the first pixel along the ray that passes that test — the same
+// pixel a march over every pixel finds — in O(log) steps over empty stretches.
+#ifndef MIRAGE_METHODS_SSR_SSR_MARCH_SHARED_H
+#define MIRAGE_METHODS_SSR_SSR_MARCH_SHARED_H
+
+#include "shading/glsl_compat.h"
+
+SHARED_BEGIN
+
+// View depth (distance along the view axis) of window depth `z` under a perspective projection
+// with planes `near_plane`, `far_plane` (OpenGL clip space, depth range 0..1).
+SHARED_FN float ssr_view_depth(float z, float near_plane, float far_plane) {
+  float ndc = 2.0f * z - 1.0f;
+  return 2.0f * near_plane * far_plane /
+         ((far_plane + near_plane) - ndc * (far_plane - near_plane));
+}
+
+// The pixel test: the ray crosses pixel `p` with window depth za on entry and zb on exit, the
+// depth buffer holds d there. A hit when the ray reaches the surface inside the pixel: it
+// enters in front and leaves behind (crossing it), or enters behind by no more than
+// `thickness` (view-depth units) — a surface is taken to be that thick, so that a ray passing
+// far behind a foreground object is not stopped by it. d >= 1: nothing drawn there.
+SHARED_FN bool ssr_pixel_hit(float za, float zb, float d, float thickness, float near_plane,
+                             float far_plane) {
+  if (d >= 1.0f || max(za, zb) < d) return false;
+  if (za <= d) return true;
+  return ssr_view_depth(za, near_plane, far_plane) - ssr_view_depth(d, near_plane, far_plane) <=
+         thickness;
+}
+
+// The parameter along from -> to where the ray leaves the cell of size `cell` holding the point
+// at parameter t (clamped to 1).
+SHARED_FN float ssr_cell_exit(vec3 from, vec3 to, float t, float cell) {
+  vec2 d = vec2(to.x - from.x, to.y - from.y);
+  vec2 p = vec2(from.x, from.y) + t * d;
+  vec2 c = floor(p / cell);
+  float exit_t = 1.0f;
+  if (d.x > 0.0f) exit_t = min(exit_t, ((c.x + 1.0f) * cell - from.x) / d.x);
+  if (d.x < 0.0f) exit_t = min(exit_t, (c.x * cell - from.x) / d.x);
+  if (d.y > 0.0f) exit_t = min(exit_t, ((c.y + 1.0f) * cell - from.y) / d.y);
+  if (d.y < 0.0f) exit_t = min(exit_t, (c.y * cell - from.y) / d.y);
+  return max(exit_t, t);
+}
+
+// A small step past a cell boundary, in parameter units: 1/1024 pixel along the major axis.
+SHARED_FN float ssr_nudge(vec3 from, vec3 to) {
+  return (1.0f / 1024.0f) / max(max(abs(to.x - from.x), abs(to.y - from.y)), 1.0e-6f);
+}
+
+// Marches from -> to (already clipped to the screen, from at the reflecting pixel) through a
+// pyramid of `levels` levels. Returns the parameter of the hit pixel's entry point (>= 0) or -1
+// (no hit before `to`, or more than `max_steps` cells visited); `hit_pixel` receives the hit
+// pixel, `steps` the cells visited. The reflecting pixel itself is never tested.
+SHARED_FN float ssr_march(vec3 from, vec3 to, int levels, int max_steps, float thickness,
+                          float near_plane, float far_plane, SHARED_OUT(ivec2) hit_pixel,
+                          SHARED_OUT(int) steps) {
+  float nudge = ssr_nudge(from, to);
+  float t = ssr_cell_exit(from, to, 0.0f, 1.0f) + nudge;
+  int level = 0;
+  steps = 0;
+  hit_pixel = ivec2(-1, -1);
+  while (t < 1.0f && steps < max_steps) {
+    steps += 1;
+    float cell = float(1 << level);
+    float exit_t = ssr_cell_exit(from, to, t, cell);
+    vec3 p = from + t * (to - from);
+    ivec2 c = ivec2(floor(vec2(p.x, p.y) / cell));
+    float za = p.z;
+    float zb = from.z + exit_t * (to.z - from.z);
+    float nearest = ssr_hiz(level, c.x, c.y);
+    if (max(za, zb) < nearest) {
+      // Nothing in this cell is as near as the ray gets: skip it and try a coarser cell.
+      t = exit_t + nudge;
+      if (level + 1 < levels) level += 1;
+    } else if (level > 0) {
+      level -= 1;
+    } else {
+      if (ssr_pixel_hit(za, zb, nearest, thickness, near_plane, far_plane)) {
+        hit_pixel = c;
+        return t;
+      }
+      t = exit_t + nudge;
+    }
+  }
+  return -1.0f;
+}
+
+// Binary refinement of a hit: the pixel test is made on whole pixels; within the hit pixel (the
+// ray between parameters t0 and t1) bisect for where the ray meets the depth buffer's bilinear
+// interpolation, so the colour is read where the surface is rather than at the pixel's edge.
+// The depth buffer interpolated bilinearly between pixel centres (clamped to `size`).
+SHARED_FN float ssr_bilinear_depth(vec2 p, ivec2 size) {
+  vec2 q = p - vec2(0.5f, 0.5f);
+  vec2 base = floor(q);
+  vec2 f = q - base;
+  int x0 = clamp(int(base.x), 0, size.x - 1), x1 = clamp(int(base.x) + 1, 0, size.x - 1);
+  int y0 = clamp(int(base.y), 0, size.y - 1), y1 = clamp(int(base.y) + 1, 0, size.y - 1);
+  float a = ssr_hiz(0, x0, y0), b = ssr_hiz(0, x1, y0);
+  float c = ssr_hiz(0, x0, y1), d = ssr_hiz(0, x1, y1);
+  return mix(mix(a, b, f.x), mix(c, d, f.x), f.y);
+}
+
+SHARED_FN float ssr_refine(vec3 from, vec3 to, float t0, float t1, ivec2 size, int iterations) {
+  float lo = t0, hi = t1;
+  for (int i = 0; i < iterations; ++i) {
+    float mid = 0.5f * (lo + hi);
+    vec3 p = from + mid * (to - from);
+    if (p.z >= ssr_bilinear_depth(vec2(p.x, p.y), size))
+      hi = mid;
+    else
+      lo = mid;
+  }
+  return hi;
+}
+
+SHARED_END
+
+#endif  // MIRAGE_METHODS_SSR_SSR_MARCH_SHARED_H

@@ -1,0 +1,180 @@
+#include "methods/ssr/ssr_method.h"
+
+#include <array>
+
+#include "gpu/buffer.h"
+#include "gpu/framebuffer.h"
+#include "methods/envmap/envmap_method.h"
+#include "methods/ssr/hiz_pyramid.h"
+#include "methods/ssr/ssr_shared.h"
+
+namespace mirage {
+
+namespace {
+
+// The direct view as the G-buffer pass draws it: colour (reflectors at their base colour),
+// reflector ids, normals facing the viewer (w: reflector mask) and depth.
+struct GBuffer {
+  explicit GBuffer(ivec2 s) : size(s) {
+    color = gpu::Texture::create2D(GL_RGBA16F, s.x, s.y);
+    ids = gpu::Texture::create2D(GL_R32UI, s.x, s.y);
+    normal = gpu::Texture::create2D(GL_RGBA16F, s.x, s.y);
+    depth = gpu::Texture::create2D(GL_DEPTH_COMPONENT32F, s.x, s.y);
+    for (gpu::Texture* t : {&ids, &normal, &depth}) t->setFilter(GL_NEAREST, GL_NEAREST);
+    color.setFilter(GL_LINEAR, GL_LINEAR);  // read at the refined hit, between pixel centres
+    fbo.attachColor(0, color);
+    fbo.attachColor(1, ids);
+    fbo.attachColor(2, normal);
+    fbo.attachDepth(depth);
+    fbo.setDrawBuffers(3);
+    fbo.checkComplete("ssr G-buffer");
+  }
+  void bindAndClear() const {
+    fbo.bind();
+    glViewport(0, 0, size.x, size.y);
+    const float zero[4] = {0, 0, 0, 0};
+    const GLuint zero_id[4] = {0, 0, 0, 0};
+    const float far_depth = 1.0f;
+    glDepthMask(GL_TRUE);
+    glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, zero);
+    glClearNamedFramebufferuiv(fbo.id(), GL_COLOR, 1, zero_id);
+    glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 2, zero);
+    glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &far_depth);
+  }
+  ivec2 size;
+  gpu::Texture color, ids, normal, depth;
+  gpu::Framebuffer fbo;
+};
+
+class SsrMethod final : public Method {
+ public:
+  explicit SsrMethod(const MethodSetup& setup)
+      : info_(setup.info),
+        fallback_name_(setup.params.text("ssr-fallback")),
+        max_steps_(setup.params.integer("ssr-steps")),
+        thickness_(float(setup.params.real("ssr-thickness"))),
+        edge_fade_(float(setup.params.real("ssr-edge-fade"))),
+        gbuffer_diffuse_(gpu::Program::graphics(
+            "render/shaders/scene.vert", "render/shaders/diffuse.frag", {"MIRAGE_GBUFFER 1"})),
+        gbuffer_reflector_(gpu::Program::graphics(
+            "render/shaders/scene.vert", "methods/ssr/ssr_gbuffer.frag", {"MIRAGE_GBUFFER 1"})),
+        program_(gpu::Program::graphics("render/shaders/scene.vert", "methods/ssr/ssr.frag")) {
+    const MethodEntry& fallback = findMethod(fallback_name_);
+    fallback_ = fallback.create(
+        MethodSetup{fallback.info, setup.gpu, setup.passes, setup.params, setup.settings});
+    counts_.upload(std::span<const GLuint>(zeros_));
+  }
+
+  const MethodInfo& info() const override { return info_; }
+
+  void update(FrameContext& frame) override { fallback_->update(frame); }
+
+  void render(FrameContext& frame) override {
+    // The fallback's frame first: the direct part, and the reflectors as its probes show them.
+    fallback_->render(frame);
+    if (frame.settings.order == 0) return;
+    const ivec2 size = frame.view.size();
+    if (!gbuffer_ || gbuffer_->size != size) gbuffer_ = std::make_unique<GBuffer>(size);
+
+    gbuffer_->bindAndClear();
+    frame.passes.begin(frame.view, frame.settings);
+    frame.passes.drawDiffuseWith(gbuffer_diffuse_);
+    frame.passes.drawReflectors(gbuffer_reflector_);
+    hiz_.build(gbuffer_->depth, size);
+
+    frame.target.bind();
+    frame.passes.begin(frame.view, frame.settings);
+    hiz_.texture().bind(MIRAGE_UNIT_SSR_HIZ);
+    gbuffer_->color.bind(MIRAGE_UNIT_SSR_COLOR);
+    gbuffer_->normal.bind(MIRAGE_UNIT_SSR_NORMAL);
+    counts_.upload(std::span<const GLuint>(zeros_));
+    counts_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_SSR_COUNTS);
+    const Bounds3 bounds = frame.gpu.scene().bounds(frame.gpu.time());
+    program_.set("u_size", size);
+    program_.set("u_levels", hiz_.levels());
+    program_.set("u_max_steps", max_steps_);
+    program_.set("u_thickness", thickness_ * std::max(bounds.radius(), 1e-6f));
+    program_.set("u_edge_fade", edge_fade_);
+    program_.set("u_near", frame.view.nearPlane());
+    program_.set("u_far", frame.view.farPlane());
+    program_.set("u_forward", frame.view.forward());
+    // Blend over the fallback by the pixel's weight; keep the target's alpha (eye distance). The
+    // reflectors are where the fallback drew them: equal depths pass, nothing is written.
+    glEnable(GL_BLEND);
+    glBlendFuncSeparatei(0, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_FALSE);
+    frame.passes.drawReflectors(program_);
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    counted_ = true;
+  }
+
+  int orderRendered(int requested) const override { return std::min(requested, 1); }
+
+  std::map<std::string, double> stats() const override {
+    std::map<std::string, double> s = fallback_->stats();
+    if (!counted_) return s;
+    std::array<GLuint, MIRAGE_SSR_COUNTS> c{};
+    counts_.download(c.data(), sizeof(c));
+    const double pixels = double(c[MIRAGE_SSR_PIXELS]);
+    const double share = pixels > 0 ? 1.0 / pixels : 0.0;
+    s["ssr_reflector_pixels"] = pixels;
+    s["ssr_hit_fraction"] = double(c[MIRAGE_SSR_HITS]) * share;
+    s["ssr_faded_fraction"] = double(c[MIRAGE_SSR_FADED]) * share;
+    s["ssr_off_screen_fraction"] = double(c[MIRAGE_SSR_OFF_SCREEN]) * share;
+    s["ssr_no_hit_fraction"] = double(c[MIRAGE_SSR_NO_HIT]) * share;
+    s["ssr_back_face_fraction"] = double(c[MIRAGE_SSR_BACK_FACE]) * share;
+    s["ssr_out_of_steps_fraction"] = double(c[MIRAGE_SSR_OUT_OF_STEPS]) * share;
+    s["ssr_fallback_fraction"] = double(c[MIRAGE_SSR_FALLBACK_WEIGHT]) / 1024.0 * share;
+    return s;
+  }
+
+ private:
+  const MethodInfo& info_;
+  std::string fallback_name_;
+  int max_steps_;
+  float thickness_, edge_fade_;
+  gpu::Program gbuffer_diffuse_, gbuffer_reflector_, program_;
+  std::unique_ptr<Method> fallback_;
+  std::unique_ptr<GBuffer> gbuffer_;
+  HiZPyramid hiz_;
+  gpu::Buffer counts_;
+  std::array<GLuint, MIRAGE_SSR_COUNTS> zeros_{};
+  bool counted_ = false;
+};
+
+}  // namespace
+
+MethodEntry ssrMethodEntry() {
+  MethodEntry entry;
+  entry.info.name = "ssr";
+  entry.info.description =
+      "screen-space reflections: each reflected ray marched through a hierarchical-Z pyramid of "
+      "the direct view's depth, the hit pixel's colour, a reflection probe (--ssr-fallback) where "
+      "the screen has no data; order 1 only";
+  entry.info.max_order = 1;
+  entry.info.params = {
+      ParamSpec::integer("ssr-steps", 8, 4096, 256,
+                         "ssr: the most pyramid cells a reflected ray visits before it gives up "
+                         "(then the fallback shows)"),
+      ParamSpec::real("ssr-thickness", 1e-4, 1.0, 0.02,
+                      "ssr: how thick a surface of the depth buffer is taken to be, as a fraction "
+                      "of the scene's bounding radius (a ray passing further behind misses it)"),
+      ParamSpec::real("ssr-edge-fade", 0.0, 0.5, 0.1,
+                      "ssr: width of the fade to the fallback at the screen's edges, as a fraction "
+                      "of its shorter side"),
+      ParamSpec::choice("ssr-fallback", {"envmap", "envmap-box"}, "envmap-box",
+                        "ssr: the reflection probes shown where the screen has no data")};
+  // The fallback's own parameters (envmap-box's are a superset of envmap's).
+  for (const ParamSpec& p : envmapBoxMethodEntry().info.params) entry.info.params.push_back(p);
+  entry.info.counters = {"cube_captures", "capture_passes"};
+  entry.info.frame_stats = {"ssr_hit_fraction", "ssr_fallback_fraction"};
+  entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
+    return std::make_unique<SsrMethod>(setup);
+  };
+  return entry;
+}
+
+}  // namespace mirage

@@ -1,0 +1,26 @@
+// Method `ssr`: the bindings its passes share with C++, and the per-frame counts it reports.
+#ifndef MIRAGE_METHODS_SSR_SSR_SHARED_H
+#define MIRAGE_METHODS_SSR_SSR_SHARED_H
+
+// Texture units after MIRAGE_UNIT_METHOD (4), which the fallback method's probes hold.
+#define MIRAGE_UNIT_SSR_HIZ 5     // r32f, mip levels: the hierarchical-Z pyramid
+#define MIRAGE_UNIT_SSR_COLOR 6   // rgba16f: the direct view's colour (reflectors at base colour)
+#define MIRAGE_UNIT_SSR_NORMAL 7  // rgba16f: xyz the normal facing the viewer, w 1 on reflectors
+#define MIRAGE_UNIT_SSR_DEPTH 8   // the G-buffer's depth, read by the pyramid's first level
+#define MIRAGE_BIND_SSR_COUNTS 5  // uint[MIRAGE_SSR_COUNTS]: the last frame's counts (below)
+#define MIRAGE_IMAGE_SSR_LEVEL_IN 0
+#define MIRAGE_IMAGE_SSR_LEVEL_OUT 1
+#define MIRAGE_SSR_GROUP 8  // the pyramid build's work groups are 8x8
+
+// What became of each reflector pixel's ray (one counter each) and the fallback's share.
+#define MIRAGE_SSR_PIXELS 0        // reflector pixels shaded
+#define MIRAGE_SSR_HITS 1          // ... whose ray hit the screen's data at full weight
+#define MIRAGE_SSR_FADED 2         // ... hit, but inside the edge fade (blended with the fallback)
+#define MIRAGE_SSR_OFF_SCREEN 3    // ... left the screen before hitting anything
+#define MIRAGE_SSR_NO_HIT 4        // ... ended (near or far plane) with nothing hit on screen
+#define MIRAGE_SSR_BACK_FACE 5     // ... hit a surface from behind (its front is all we have)
+#define MIRAGE_SSR_OUT_OF_STEPS 6  // ... ran out of --ssr-steps
+#define MIRAGE_SSR_FALLBACK_WEIGHT 7  // sum over pixels of the fallback's weight, x 1024
+#define MIRAGE_SSR_COUNTS 8
+
+#endif  // MIRAGE_METHODS_SSR_SSR_SHARED_H

@@ -1,0 +1,158 @@
+// Method `ssr` on the GPU: its hierarchical-Z pyramid (each level the minimum of the four cells
+// below), and its frames against the ray tracer — tight where every reflected point is on the
+// screen, and, where most are not, the fallback doing the work, measured. On failure the
+// actual/expected/diff images are written under build/<preset>/test-artifacts/.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "eval/metrics.h"
+#include "methods/frame.h"
+#include "methods/ssr/hiz_pyramid.h"
+#include "raytrace/tracer.h"
+#include "support/gl_test.h"
+#include "support/image_check.h"
+#include "support/render_pair.h"
+#include "support/scenes.h"
+
+namespace mirage::test {
+namespace {
+
+class SsrGpu : public GlTest {};
+
+std::vector<float> readLevel(const gpu::Texture& t, int level, ivec2 size) {
+  std::vector<float> out(size_t(size.x * size.y));
+  glGetTextureImage(t.id(), level, GL_RED, GL_FLOAT, GLsizei(out.size() * sizeof(float)),
+                    out.data());
+  return out;
+}
+
+TEST_F(SsrGpu, EachPyramidLevelIsTheMinimumOfTheFourBelow) {
+  const ivec2 screen(75, 41);  // not powers of two: the pyramid pads to 128 x 64
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  std::vector<float> depth(size_t(screen.x * screen.y));
+  for (float& d : depth) d = unit(rng) < 0.2f ? 1.0f : unit(rng);
+  gpu::Texture texture = gpu::Texture::create2D(GL_DEPTH_COMPONENT32F, screen.x, screen.y);
+  texture.upload(0, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+
+  HiZPyramid pyramid;
+  pyramid.build(texture, screen);
+  const ivec2 padded = HiZPyramid::paddedSize(screen);
+  ASSERT_EQ(padded, ivec2(128, 64));
+  ASSERT_EQ(pyramid.levels(), 8);  // 128 -> 1
+
+  std::vector<float> below = readLevel(pyramid.texture(), 0, padded);
+  // Level 0: the depth buffer (rows as GL stores them, bottom first) and 1 past it.
+  for (int y = 0; y < padded.y; ++y)
+    for (int x = 0; x < padded.x; ++x) {
+      const bool inside = x < screen.x && y < screen.y;
+      const float want = inside ? depth[size_t(y * screen.x + x)] : 1.0f;
+      ASSERT_EQ(below[size_t(y * padded.x + x)], want) << "level 0 at " << x << "," << y;
+    }
+  ivec2 below_size = padded;
+  for (int level = 1; level < pyramid.levels(); ++level) {
+    const ivec2 size = glm::max(padded >> level, ivec2(1));
+    const std::vector<float> here = readLevel(pyramid.texture(), level, size);
+    for (int y = 0; y < size.y; ++y)
+      for (int x = 0; x < size.x; ++x) {
+        float want = 1.0f;
+        for (int j = 0; j < 2; ++j)
+          for (int i = 0; i < 2; ++i)
+            if (2 * x + i < below_size.x && 2 * y + j < below_size.y)
+              want = std::min(want, below[size_t((2 * y + j) * below_size.x + 2 * x + i)]);
+        ASSERT_EQ(here[size_t(y * size.x + x)], want)
+            << "level " << level << " at " << x << "," << y;
+      }
+    below = here;
+    below_size = size;
+  }
+}
+
+// A mirror floor before a checker wall and a box, the camera level: every reflected ray from
+// the floor meets the wall or the box on a face the camera sees, or the sky.
+Scene mirrorFloorBeforeWall() {
+  Scene s;
+  s.name = "mirror-floor-before-wall";
+  const int floor = addMesh(s, procedural::quad(20.0f, 12.0f));
+  addInstance(s, "floor", floor, addMaterial(s, Material::mirror("floor-mirror")),
+              placeAt({0.0f, 0.0f, -2.0f}));
+  const int wall = addMesh(s, procedural::box({10.0f, 4.0f, 0.1f}));
+  addInstance(s, "wall", wall,
+              addMaterial(s, Material::checker("wall", kCheckerLight, {0.8f, 0.3f, 0.2f}, 1.0f)),
+              placeAt({0.0f, 4.0f, -6.0f}));
+  const int box = addMesh(s, procedural::box({0.4f, 0.4f, 0.4f}));
+  addInstance(s, "box", box, addMaterial(s, Material::diffuse("box", {0.2f, 0.7f, 0.3f})),
+              placeAt({0.8f, 0.4f, -4.0f}));
+  finishScene(s, vec3{0.0f, 1.0f, 2.0f}, vec3{0.0f, 0.6f, -6.0f}, 50.0f);
+  return s;
+}
+
+struct SsrFrame {
+  RenderPair pair;
+  std::map<std::string, double> stats;
+};
+
+SsrFrame renderSsr(const Scene& scene, ivec2 size, const std::map<std::string, std::string>& params,
+                   const std::string& method = "ssr") {
+  FrameSettings settings;
+  settings.order = 1;
+  FrameRenderer renderer(scene, size);
+  const View view(scene.camera(), size);
+  auto m = renderer.createMethod(method, params, settings);
+  renderer.render(*m, view, 0.0f, settings);
+  RenderedFrame frame = renderer.read();
+  RayTracer tracer(scene, renderer.environment());
+  tracer.prepare(0.0f);
+  TraceResult truth = tracer.render(view, {settings.order, 1});
+  return {{displayed(frame.color), displayed(truth.color), frame.ids, truth.ids}, m->stats()};
+}
+
+TEST_F(SsrGpu, MatchesTheRayTracerWhereEveryReflectedPointIsOnScreen) {
+  const Scene scene = mirrorFloorBeforeWall();
+  const SsrFrame f = renderSsr(scene, {320, 240}, {{"ssr-edge-fade", "0"}});
+  const double psnr = reflectorPsnr(f.pair);
+  std::printf("on-screen: reflector PSNR %.2f dB, fallback %.4f, hits %.4f, pixels %.0f\n", psnr,
+              f.stats.at("ssr_fallback_fraction"), f.stats.at("ssr_hit_fraction"),
+              f.stats.at("ssr_reflector_pixels"));
+  EXPECT_GT(f.stats.at("ssr_reflector_pixels"), 10000.0);
+  // The only rays the screen cannot answer leave over the wall's top into the sky.
+  EXPECT_LT(f.stats.at("ssr_fallback_fraction"), 0.05);
+  // Measured 31.0 dB at 320x240 and 5.2 % of the pixels off by more than 0.02: the error is on
+  // the checker's edges, which the hit's colour, read between the direct view's pixels, blurs;
+  // everywhere else the reflection is the ray tracer's.
+  EXPECT_TRUE(psnrAtLeast(f.pair.gpu, f.pair.cpu, 29.0, &f.pair.cpu_ids, "ssr-on-screen"));
+  EXPECT_TRUE(mostPixelsWithin(f.pair.gpu, f.pair.cpu, 0.02f, 0.07, &f.pair.cpu_ids,
+                               "ssr-on-screen-pixels"));
+}
+
+TEST_F(SsrGpu, HandsWhatIsOffScreenToTheFallback) {
+  // The mirror in mirror-room shows mostly what is behind the camera.
+  const Scene scene = makeBuiltinScene("mirror-room");
+  const SsrFrame ssr = renderSsr(scene, {320, 240}, {{"ssr-fallback", "envmap-box"}});
+  const SsrFrame box = renderSsr(scene, {320, 240}, {}, "envmap-box");
+  const double psnr_ssr = reflectorPsnr(ssr.pair), psnr_box = reflectorPsnr(box.pair);
+  std::printf(
+      "mirror-room: fallback %.3f (off screen %.3f, back faces %.3f), reflector PSNR "
+      "ssr %.2f dB, envmap-box alone %.2f dB\n",
+      ssr.stats.at("ssr_fallback_fraction"), ssr.stats.at("ssr_off_screen_fraction"),
+      ssr.stats.at("ssr_back_face_fraction"), psnr_ssr, psnr_box);
+  EXPECT_GT(ssr.stats.at("ssr_fallback_fraction"), 0.5);
+  EXPECT_GT(ssr.stats.at("ssr_off_screen_fraction"), 0.5);
+  EXPECT_GT(ssr.stats.at("ssr_hit_fraction"), 0.05);
+  EXPECT_GE(ssr.stats.at("cube_captures"), 1.0) << "the fallback's probes were captured";
+  // Where SSR gives up, the probe shows: never a black reflection.
+  EXPECT_GE(psnr_ssr, psnr_box - 1.0);
+}
+
+TEST_F(SsrGpu, RendersOrderOneOnly) {
+  const Scene scene = makeBuiltinScene("sphere-over-checker");
+  FrameRenderer renderer(scene, {64, 48});
+  FrameSettings settings;
+  settings.order = 3;
+  auto m = renderer.createMethod("ssr", {}, settings);
+  EXPECT_EQ(m->orderRendered(3), 1);
+}
+
+}  // namespace
+}  // namespace mirage::test
