@@ -1,6 +1,7 @@
-// Method `ssr`: one level of the hierarchical-Z pyramid. Level 0 is the G-buffer's window depth
-// (1, "nothing", outside the screen: the pyramid is a power of two a side), every further
-// level the minimum — the nearest depth — of the up to four cells below it.
+// Method `ssr`: one level of the hierarchical-Z pyramid, the minimum — the nearest depth — of
+// the up to four cells below it. Level 0 is the depth buffer itself (read as a texture, 1,
+// "nothing", past the screen's edge: the pyramid is a power of two a side); the texture holds
+// levels 1 and up, its level i - 1 being the pyramid's level i.
 #include "render/shaders/common.glsl"
 #include "methods/ssr/ssr_shared.h"
 
@@ -12,21 +13,19 @@ layout(binding = MIRAGE_IMAGE_SSR_LEVEL_OUT, r32f) uniform writeonly image2D u_o
 
 uniform ivec2 u_out_size;  // the level written
 uniform ivec2 u_in_size;   // the level below (level 0: the screen's size)
-uniform int u_first;       // 1: write level 0 from the depth buffer
+uniform int u_first;       // 1: the level below is the depth buffer
+
+float below(ivec2 at) {
+  if (at.x >= u_in_size.x || at.y >= u_in_size.y) return 1.0f;
+  return u_first != 0 ? texelFetch(u_depth, at, 0).r : imageLoad(u_in, at).r;
+}
 
 void main() {
   ivec2 at = ivec2(gl_GlobalInvocationID.xy);
   if (at.x >= u_out_size.x || at.y >= u_out_size.y) return;
-  if (u_first != 0) {
-    bool inside = at.x < u_in_size.x && at.y < u_in_size.y;
-    imageStore(u_out, at, vec4(inside ? texelFetch(u_depth, at, 0).r : 1.0f));
-    return;
-  }
-  float nearest = 1.0f;
-  for (int i = 0; i < 4; ++i) {
-    ivec2 below = 2 * at + ivec2(i & 1, i >> 1);
-    if (below.x < u_in_size.x && below.y < u_in_size.y)
-      nearest = min(nearest, imageLoad(u_in, below).r);
-  }
+  float nearest = below(2 * at);
+  nearest = min(nearest, below(2 * at + ivec2(1, 0)));
+  nearest = min(nearest, below(2 * at + ivec2(0, 1)));
+  nearest = min(nearest, below(2 * at + ivec2(1, 1)));
   imageStore(u_out, at, vec4(nearest));
 }

@@ -14,27 +14,33 @@ ivec2 HiZPyramid::paddedSize(ivec2 screen) {
                int(std::bit_ceil(unsigned(std::max(screen.y, 1)))));
 }
 
+ivec2 HiZPyramid::levelSize(ivec2 screen, int level) {
+  return glm::max(paddedSize(screen) >> level, ivec2(1));
+}
+
 void HiZPyramid::build(const gpu::Texture& depth, ivec2 screen) {
   const ivec2 padded = paddedSize(screen);
+  const int levels = gpu::Texture::fullMipLevels(std::max(padded.x, padded.y));
+  if (levels < 2) return;  // a 1x1 screen: the depth buffer is the whole pyramid
   if (screen != screen_ || texture_.id() == 0) {
-    const int levels = gpu::Texture::fullMipLevels(std::max(padded.x, padded.y));
-    texture_ = gpu::Texture::create2D(GL_R32F, padded.x, padded.y, levels);
+    const ivec2 first = levelSize(screen, 1);
+    texture_ = gpu::Texture::create2D(GL_R32F, first.x, first.y, levels - 1);
     texture_.setFilter(GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST);
     screen_ = screen;
   }
   program_.use();
   depth.bind(MIRAGE_UNIT_SSR_DEPTH);
   ivec2 below = screen;
-  for (int level = 0; level < texture_.levels(); ++level) {
-    const ivec2 size = glm::max(padded >> level, ivec2(1));
+  for (int level = 1; level < levels; ++level) {
+    const ivec2 size = levelSize(screen, level);
     program_.set("u_out_size", size);
     program_.set("u_in_size", below);
-    program_.set("u_first", level == 0 ? 1 : 0);
-    if (level > 0)
-      glBindImageTexture(MIRAGE_IMAGE_SSR_LEVEL_IN, texture_.id(), level - 1, GL_FALSE, 0,
+    program_.set("u_first", level == 1 ? 1 : 0);
+    if (level > 1)
+      glBindImageTexture(MIRAGE_IMAGE_SSR_LEVEL_IN, texture_.id(), level - 2, GL_FALSE, 0,
                          GL_READ_ONLY, GL_R32F);
-    glBindImageTexture(MIRAGE_IMAGE_SSR_LEVEL_OUT, texture_.id(), level, GL_FALSE, 0, GL_WRITE_ONLY,
-                       GL_R32F);
+    glBindImageTexture(MIRAGE_IMAGE_SSR_LEVEL_OUT, texture_.id(), level - 1, GL_FALSE, 0,
+                       GL_WRITE_ONLY, GL_R32F);
     glDispatchCompute(GLuint((size.x + MIRAGE_SSR_GROUP - 1) / MIRAGE_SSR_GROUP),
                       GLuint((size.y + MIRAGE_SSR_GROUP - 1) / MIRAGE_SSR_GROUP), 1);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);

@@ -1,7 +1,9 @@
 // Method `ssr`: the hierarchical-Z pyramid of a depth buffer — a min-depth mip chain, so that a
 // reflected ray's march can skip a whole 2^l x 2^l cell whose nearest depth it stays in front
-// of (ssr_march_shared.h). The pyramid is a power of two a side (pixels past the screen hold 1,
-// "nothing"), so that a cell of level l covers pixels [2^l c, 2^l (c + 1)) on every level.
+// of (ssr_march_shared.h). The pyramid is a power of two a side (pixels past the screen count
+// as 1, "nothing"), so that a cell of level l covers pixels [2^l c, 2^l (c + 1)) on every level.
+// Level 0 is the depth buffer itself; texture() holds levels 1 and up (its mip level i - 1 is
+// the pyramid's level i), which saves a copy of the largest level.
 #pragma once
 
 #include "gpu/program.h"
@@ -13,14 +15,17 @@ class HiZPyramid {
  public:
   HiZPyramid();
 
-  // Builds every level from `depth` (a depth texture of `screen` pixels) on the GPU.
+  // Builds levels 1 and up from `depth` (a depth texture of `screen` pixels) on the GPU.
   void build(const gpu::Texture& depth, ivec2 screen);
 
   const gpu::Texture& texture() const { return texture_; }
-  int levels() const { return texture_.levels(); }
+  // Levels of the pyramid, level 0 (the depth buffer) included.
+  int levels() const { return texture_.levels() + 1; }
   ivec2 screen() const { return screen_; }
   // The pyramid's side lengths at level 0: `screen` rounded up to powers of two.
   static ivec2 paddedSize(ivec2 screen);
+  // Its side lengths at `level`.
+  static ivec2 levelSize(ivec2 screen, int level);
 
  private:
   gpu::Program program_;

@@ -13,36 +13,39 @@ namespace mirage {
 namespace {
 
 // The direct view as the G-buffer pass draws it: colour (reflectors at their base colour),
-// reflector ids, normals facing the viewer (w: reflector mask) and depth.
+// reflector ids and normals facing the viewer (w: reflector mask). Its depth is the frame's
+// own, which the fallback's frame has just written (the same triangles through the same
+// invariant vertex stage): drawn with the depth test EQUAL and no depth writes, only the
+// visible surface of each pixel is shaded, and the pyramid is built from that depth directly.
 struct GBuffer {
-  explicit GBuffer(ivec2 s) : size(s) {
+  GBuffer(ivec2 s, const gpu::Texture& frame_depth) : size(s), depth_id(frame_depth.id()) {
     color = gpu::Texture::create2D(GL_RGBA16F, s.x, s.y);
     ids = gpu::Texture::create2D(GL_R32UI, s.x, s.y);
     normal = gpu::Texture::create2D(GL_RGBA16F, s.x, s.y);
-    depth = gpu::Texture::create2D(GL_DEPTH_COMPONENT32F, s.x, s.y);
-    for (gpu::Texture* t : {&ids, &normal, &depth}) t->setFilter(GL_NEAREST, GL_NEAREST);
+    for (gpu::Texture* t : {&ids, &normal}) t->setFilter(GL_NEAREST, GL_NEAREST);
     color.setFilter(GL_LINEAR, GL_LINEAR);  // read at the refined hit, between pixel centres
     fbo.attachColor(0, color);
     fbo.attachColor(1, ids);
     fbo.attachColor(2, normal);
-    fbo.attachDepth(depth);
+    fbo.attachDepth(frame_depth);
     fbo.setDrawBuffers(3);
     fbo.checkComplete("ssr G-buffer");
+  }
+  bool fits(ivec2 s, const gpu::Texture& frame_depth) const {
+    return size == s && depth_id == frame_depth.id();
   }
   void bindAndClear() const {
     fbo.bind();
     glViewport(0, 0, size.x, size.y);
     const float zero[4] = {0, 0, 0, 0};
     const GLuint zero_id[4] = {0, 0, 0, 0};
-    const float far_depth = 1.0f;
-    glDepthMask(GL_TRUE);
     glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, zero);
     glClearNamedFramebufferuiv(fbo.id(), GL_COLOR, 1, zero_id);
     glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 2, zero);
-    glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &far_depth);
   }
   ivec2 size;
-  gpu::Texture color, ids, normal, depth;
+  GLuint depth_id;
+  gpu::Texture color, ids, normal;
   gpu::Framebuffer fbo;
 };
 
@@ -74,17 +77,24 @@ class SsrMethod final : public Method {
     fallback_->render(frame);
     if (frame.settings.order == 0) return;
     const ivec2 size = frame.view.size();
-    if (!gbuffer_ || gbuffer_->size != size) gbuffer_ = std::make_unique<GBuffer>(size);
+    const gpu::Texture& depth = frame.target.depth();
+    if (!gbuffer_ || !gbuffer_->fits(size, depth))
+      gbuffer_ = std::make_unique<GBuffer>(size, depth);
 
     gbuffer_->bindAndClear();
     frame.passes.begin(frame.view, frame.settings);
+    glDepthFunc(GL_EQUAL);
+    glDepthMask(GL_FALSE);
     frame.passes.drawDiffuseWith(gbuffer_diffuse_);
     frame.passes.drawReflectors(gbuffer_reflector_);
-    hiz_.build(gbuffer_->depth, size);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    hiz_.build(depth, size);
 
     frame.target.bind();
     frame.passes.begin(frame.view, frame.settings);
     hiz_.texture().bind(MIRAGE_UNIT_SSR_HIZ);
+    depth.bind(MIRAGE_UNIT_SSR_DEPTH);
     gbuffer_->color.bind(MIRAGE_UNIT_SSR_COLOR);
     gbuffer_->normal.bind(MIRAGE_UNIT_SSR_NORMAL);
     counts_.upload(std::span<const GLuint>(zeros_));
