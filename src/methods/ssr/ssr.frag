@@ -52,10 +52,11 @@ vec3 to_world(vec3 window) {
   return world.xyz / world.w;
 }
 
+// One atomic a pixel (and one more in the fade): the pixel count and the fallback's whole
+// pixels are sums of these on the CPU.
 void count(int which) { atomicAdd(ssr_counts[which], 1u); }
 
 vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflector) {
-  count(MIRAGE_SSR_PIXELS);
   g_coverage = 0.0f;
   // The ray in the world, cut where it would cross the near plane (towards the eye) or pass
   // the far plane, then projected and cut at the screen's edges.
@@ -79,7 +80,6 @@ vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflecto
   ivec2 pixel;
   int steps;
   float t = ssr_march(from, to, u_levels, u_max_steps, u_thickness, u_near, u_far, pixel, steps);
-  float weight_fallback = 1.0f;
   if (t < 0.0f) {
     if (steps >= u_max_steps)
       count(MIRAGE_SSR_OUT_OF_STEPS);
@@ -96,12 +96,14 @@ vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflecto
     float edge = min(min(at.x, float(u_size.x) - at.x), min(at.y, float(u_size.y) - at.y));
     float fade_width = u_edge_fade * float(min(u_size.x, u_size.y));
     g_coverage = fade_width > 0.0f ? clamp(edge / fade_width, 0.0f, 1.0f) : 1.0f;
-    count(g_coverage >= 1.0f ? MIRAGE_SSR_HITS : MIRAGE_SSR_FADED);
-    weight_fallback = 1.0f - g_coverage;
-    atomicAdd(ssr_counts[MIRAGE_SSR_FALLBACK_WEIGHT], uint(weight_fallback * 1024.0f + 0.5f));
+    if (g_coverage >= 1.0f) {
+      count(MIRAGE_SSR_HITS);
+    } else {
+      count(MIRAGE_SSR_FADED);
+      atomicAdd(ssr_counts[MIRAGE_SSR_FADED_WEIGHT], uint((1.0f - g_coverage) * 1024.0f + 0.5f));
+    }
     vec3 hit = to_world(vec3(at.xy, ssr_bilinear_depth(at.xy, u_size)));
     return vec4(textureLod(u_color, at.xy / vec2(u_size), 0.0f).rgb, length(hit - position));
   }
-  atomicAdd(ssr_counts[MIRAGE_SSR_FALLBACK_WEIGHT], 1024u);
   return vec4(0.0f, 0.0f, 0.0f, MISS_DISTANCE);
 }

@@ -128,16 +128,20 @@ class SsrMethod final : public Method {
     if (!counted_) return s;
     std::array<GLuint, MIRAGE_SSR_COUNTS> c{};
     counts_.download(c.data(), sizeof(c));
-    const double pixels = double(c[MIRAGE_SSR_PIXELS]);
+    double pixels = 0.0;
+    for (int k = 0; k < MIRAGE_SSR_OUTCOMES; ++k) pixels += double(c[size_t(k)]);
     const double share = pixels > 0 ? 1.0 / pixels : 0.0;
+    auto fraction = [&](int k) { return double(c[size_t(k)]) * share; };
     s["ssr_reflector_pixels"] = pixels;
-    s["ssr_hit_fraction"] = double(c[MIRAGE_SSR_HITS]) * share;
-    s["ssr_faded_fraction"] = double(c[MIRAGE_SSR_FADED]) * share;
-    s["ssr_off_screen_fraction"] = double(c[MIRAGE_SSR_OFF_SCREEN]) * share;
-    s["ssr_no_hit_fraction"] = double(c[MIRAGE_SSR_NO_HIT]) * share;
-    s["ssr_back_face_fraction"] = double(c[MIRAGE_SSR_BACK_FACE]) * share;
-    s["ssr_out_of_steps_fraction"] = double(c[MIRAGE_SSR_OUT_OF_STEPS]) * share;
-    s["ssr_fallback_fraction"] = double(c[MIRAGE_SSR_FALLBACK_WEIGHT]) / 1024.0 * share;
+    s["ssr_hit_fraction"] = fraction(MIRAGE_SSR_HITS);
+    s["ssr_faded_fraction"] = fraction(MIRAGE_SSR_FADED);
+    s["ssr_off_screen_fraction"] = fraction(MIRAGE_SSR_OFF_SCREEN);
+    s["ssr_no_hit_fraction"] = fraction(MIRAGE_SSR_NO_HIT);
+    s["ssr_back_face_fraction"] = fraction(MIRAGE_SSR_BACK_FACE);
+    s["ssr_out_of_steps_fraction"] = fraction(MIRAGE_SSR_OUT_OF_STEPS);
+    // Every ray without a hit is the fallback's whole; a faded hit its share.
+    const double missed = pixels - double(c[MIRAGE_SSR_HITS]) - double(c[MIRAGE_SSR_FADED]);
+    s["ssr_fallback_fraction"] = (missed + double(c[MIRAGE_SSR_FADED_WEIGHT]) / 1024.0) * share;
     return s;
   }
 

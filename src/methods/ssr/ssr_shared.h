@@ -12,15 +12,16 @@
 #define MIRAGE_IMAGE_SSR_LEVEL_OUT 1
 #define MIRAGE_SSR_GROUP 8  // the pyramid build's work groups are 8x8
 
-// What became of each reflector pixel's ray (one counter each) and the fallback's share.
-#define MIRAGE_SSR_PIXELS 0        // reflector pixels shaded
-#define MIRAGE_SSR_HITS 1          // ... whose ray hit the screen's data at full weight
-#define MIRAGE_SSR_FADED 2         // ... hit, but inside the edge fade (blended with the fallback)
-#define MIRAGE_SSR_OFF_SCREEN 3    // ... left the screen before hitting anything
-#define MIRAGE_SSR_NO_HIT 4        // ... ended (near or far plane) with nothing hit on screen
-#define MIRAGE_SSR_BACK_FACE 5     // ... hit a surface from behind (its front is all we have)
-#define MIRAGE_SSR_OUT_OF_STEPS 6  // ... ran out of --ssr-steps
-#define MIRAGE_SSR_FALLBACK_WEIGHT 7  // sum over pixels of the fallback's weight, x 1024
-#define MIRAGE_SSR_COUNTS 8
+// What became of each reflector pixel's ray, one counter each (their sum is the pixels shaded),
+// and the fallback's share of the faded ones.
+#define MIRAGE_SSR_HITS 0          // hit the screen's data, at full weight
+#define MIRAGE_SSR_FADED 1         // hit, but inside the edge fade (blended with the fallback)
+#define MIRAGE_SSR_OFF_SCREEN 2    // left the screen before hitting anything
+#define MIRAGE_SSR_NO_HIT 3        // ended (near or far plane) with nothing hit on screen
+#define MIRAGE_SSR_BACK_FACE 4     // hit a surface from behind (its front is all we have)
+#define MIRAGE_SSR_OUT_OF_STEPS 5  // ran out of --ssr-steps
+#define MIRAGE_SSR_OUTCOMES 6
+#define MIRAGE_SSR_FADED_WEIGHT 6  // sum over the faded pixels of the fallback's weight, x 1024
+#define MIRAGE_SSR_COUNTS 7
 
 #endif  // MIRAGE_METHODS_SSR_SSR_SHARED_H
