@@ -73,24 +73,20 @@ double RayScene::build(float time) {
   Stopwatch watch;
   const size_t n = scene_.instances.size();
   // One Embree scene and one geometry per instance for the RayScene's life: later builds write
-  // the moved instances' vertices into the geometry's own buffer and commit again. A new
-  // RTCScene per frame (as before) left Embree/TBB holding ~4 KiB more per build: 4 MiB per
-  // 1,000 frames of a playing scene (docs/reliability.md, the soak); reused, it stays flat.
+  // the moved instances' vertices into the geometry's own buffer and commit again.
   //
   // A scene where something moves is two-level (scene quality LOW: a small top BVH over one BVH
   // per geometry), so a commit rebuilds only the geometries that changed: the still ones keep
   // the high-quality BVH of the first build, and the animated or deforming ones are refitted —
-  // their vertices move, their triangles and the tree's topology stay. On mirror-room this cut
-  // the per-frame build from 4.9 to 1.0 ms and on spheres9 from 73 to 19 ms, tracing as fast
-  // (docs/benchmarks.md). A still scene is built once, as one flat high-quality BVH: reflected
-  // rays leaving a sphere over a floor trace 8% faster in it than in the two-level one.
+  // their vertices move, their triangles and the tree's topology stay. At 720x512 this cut the
+  // per-frame update of mirror-room from 6.8 to 0.7 ms and of spheres9 from 66 to 16 ms
+  // (docs/benchmarks.md, "BVH builds"). A still scene is built once, as one flat high-quality BVH:
+  // reflected rays leaving a sphere over a floor trace 8% faster in it than in the two-level one.
   const bool first = rtc_scene_ == nullptr;
   if (first) {
     rtc_scene_ = rtcNewScene(device_);
     const bool any_moves = std::any_of(scene_.instances.begin(), scene_.instances.end(), moves);
-    rtcSetSceneBuildQuality(rtc_scene_, (any_moves && !std::getenv("FLAT"))
-                                            ? RTC_BUILD_QUALITY_LOW
-                                            : RTC_BUILD_QUALITY_HIGH);
+    rtcSetSceneBuildQuality(rtc_scene_, any_moves ? RTC_BUILD_QUALITY_LOW : RTC_BUILD_QUALITY_HIGH);
     geometries_.assign(n, nullptr);
     matrices_.resize(n);
     normal_matrices_.resize(n);
@@ -122,10 +118,8 @@ double RayScene::build(float time) {
                                   sizeof(uvec3), mesh.triangles.size()));
       std::memcpy(indices, mesh.triangles.data(), mesh.triangles.size() * sizeof(uvec3));
       // Only read in a two-level scene (above).
-      rtcSetGeometryBuildQuality(
-          geometry, moves(inst)
-                        ? RTCBuildQuality(std::getenv("GQ") ? std::atoi(std::getenv("GQ")) : 3)
-                        : RTC_BUILD_QUALITY_HIGH);
+      rtcSetGeometryBuildQuality(geometry,
+                                 moves(inst) ? RTC_BUILD_QUALITY_REFIT : RTC_BUILD_QUALITY_HIGH);
       rtcAttachGeometryByID(rtc_scene_, geometry, unsigned(i));
       geometries_[i] = geometry;  // the scene holds it too; released in the destructor
     }
