@@ -55,7 +55,9 @@ class SsrMethod final : public Method {
       : info_(setup.info),
         fallback_name_(setup.params.text("ssr-fallback")),
         max_steps_(setup.params.integer("ssr-steps")),
-        thickness_(float(setup.params.real("ssr-thickness"))),
+        // A fraction of the scene's bounding radius, fixed for the method's life.
+        thickness_(float(setup.params.real("ssr-thickness")) *
+                   std::max(setup.gpu.scene().bounds().radius(), 1e-6f)),
         edge_fade_(float(setup.params.real("ssr-edge-fade"))),
         gbuffer_diffuse_(gpu::Program::graphics(
             "render/shaders/scene.vert", "render/shaders/diffuse.frag", {"MIRAGE_GBUFFER 1"})),
@@ -99,11 +101,10 @@ class SsrMethod final : public Method {
     gbuffer_->normal.bind(MIRAGE_UNIT_SSR_NORMAL);
     counts_.upload(std::span<const GLuint>(zeros_));
     counts_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_SSR_COUNTS);
-    const Bounds3 bounds = frame.gpu.scene().bounds(frame.gpu.time());
     program_.set("u_size", size);
     program_.set("u_levels", hiz_.levels());
     program_.set("u_max_steps", max_steps_);
-    program_.set("u_thickness", thickness_ * std::max(bounds.radius(), 1e-6f));
+    program_.set("u_thickness", thickness_);
     program_.set("u_edge_fade", edge_fade_);
     program_.set("u_near", frame.view.nearPlane());
     program_.set("u_far", frame.view.farPlane());
