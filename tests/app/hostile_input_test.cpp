@@ -49,10 +49,16 @@ std::string sceneWith(const std::string& fields) {
   return R"({"name": "hostile", "materials": [{"name": "m", "type": "diffuse"}],)" + fields + "}";
 }
 
+// A scene of one mesh "s" (its fields after the name) drawn once with material "m"; `extra`
+// adds sections before it.
+std::string sceneWithMesh(const std::string& mesh_fields, const std::string& extra = "") {
+  return sceneWith(extra + R"("meshes": [{"name": "s", )" + mesh_fields +
+                   R"(}], "instances": [{"mesh": "s", "material": "m"}])");
+}
+
 std::string sceneWithEnvironment(const std::string& image) {
-  return sceneWith(R"("environment": {"image": ")" + image + R"("},
-    "meshes": [{"name": "s", "procedural": "sphere"}],
-    "instances": [{"mesh": "s", "material": "m"}])");
+  return sceneWithMesh(R"("procedural": "sphere")",
+                       R"("environment": {"image": ")" + image + R"("}, )");
 }
 
 std::string gltfWith(const std::string& accessor_count, const std::string& indices = "") {
@@ -204,42 +210,27 @@ std::vector<Hostile> hostileInputs() {
        {"deep.json"}},
       {"scene JSON radius of 1e39",
        "large.json",
-       [] {
-         return sceneWith(
-             R"("meshes": [{"name": "s", "procedural": "sphere", "radius": 1e39}], "instances": [{"mesh": "s", "material": "m"}])");
-       },
+       [] { return sceneWithMesh(R"("procedural": "sphere", "radius": 1e39)"); },
        render + "{}",
        {"large.json", "radius", "outside the allowed range"}},
       {"scene JSON number beyond a double",
        "overflow.json",
-       [] {
-         return sceneWith(
-             R"("meshes": [{"name": "s", "procedural": "sphere", "radius": 1e999}], "instances": [{"mesh": "s", "material": "m"}])");
-       },
+       [] { return sceneWithMesh(R"("procedural": "sphere", "radius": 1e999)"); },
        render + "{}",
        {"overflow.json", "1e999"}},
       {"scene JSON sphere of 10^9 segments",
        "segments.json",
-       [] {
-         return sceneWith(
-             R"("meshes": [{"name": "s", "procedural": "sphere", "segments": 1000000000}], "instances": [{"mesh": "s", "material": "m"}])");
-       },
+       [] { return sceneWithMesh(R"("procedural": "sphere", "segments": 1000000000)"); },
        render + "{}",
        {"segments.json", "segments", "3..2048"}},
       {"scene JSON subdividing a mesh 12 times",
        "subdivide.json",
-       [] {
-         return sceneWith(
-             R"("meshes": [{"name": "s", "file": "box.ply", "subdivide": 12}], "instances": [{"mesh": "s", "material": "m"}])");
-       },
+       [] { return sceneWithMesh(R"("file": "box.ply", "subdivide": 12)"); },
        render + "{}",
        {"subdivide.json", "subdivide = 12", "0..4"}},
       {"scene JSON naming a missing mesh file",
        "missing.json",
-       [] {
-         return sceneWith(
-             R"("meshes": [{"name": "s", "file": "nowhere.ply"}], "instances": [{"mesh": "s", "material": "m"}])");
-       },
+       [] { return sceneWithMesh(R"("file": "nowhere.ply")"); },
        render + "{}",
        {"nowhere.ply"}},
       {"binary garbage as a scene",

@@ -31,6 +31,9 @@ inline float ssr_hiz(int level, int x, int y) {
 
 #include "methods/ssr/ssr_march_shared.h"
 
+#include "methods/ssr/hiz_pyramid.h"
+#include "support/min_pyramid.h"
+
 namespace mirage::test {
 namespace {
 
@@ -38,34 +41,15 @@ namespace sh = shading;
 
 constexpr float kNear = 0.1f, kFar = 100.0f, kThickness = 0.5f;
 
-int nextPow2(int v) {
-  int p = 1;
-  while (p < v) p *= 2;
-  return p;
-}
-
 sh::CpuPyramid buildPyramid(const std::vector<float>& depth, ivec2 size) {
   sh::CpuPyramid p;
-  ivec2 s(nextPow2(size.x), nextPow2(size.y));
-  std::vector<float> level0(size_t(s.x * s.y), 1.0f);
-  for (int y = 0; y < size.y; ++y)
-    for (int x = 0; x < size.x; ++x) level0[size_t(y * s.x + x)] = depth[size_t(y * size.x + x)];
-  p.levels.push_back(level0);
+  ivec2 s = HiZPyramid::paddedSize(size);
+  p.levels.push_back(paddedDepth(depth, size, s));
   p.sizes.push_back(s);
   while (s.x > 1 || s.y > 1) {
     const ivec2 below = s;
     s = glm::max(s / 2, ivec2(1));
-    std::vector<float> level(size_t(s.x * s.y), 1.0f);
-    for (int y = 0; y < s.y; ++y)
-      for (int x = 0; x < s.x; ++x) {
-        float m = 1.0f;
-        for (int j = 0; j < 2; ++j)
-          for (int i = 0; i < 2; ++i)
-            if (2 * x + i < below.x && 2 * y + j < below.y)
-              m = std::min(m, p.levels.back()[size_t((2 * y + j) * below.x + 2 * x + i)]);
-        level[size_t(y * s.x + x)] = m;
-      }
-    p.levels.push_back(level);
+    p.levels.push_back(minLevelAbove(p.levels.back(), below, s));
     p.sizes.push_back(s);
   }
   return p;

@@ -12,6 +12,7 @@
 #include "raytrace/tracer.h"
 #include "support/gl_test.h"
 #include "support/image_check.h"
+#include "support/min_pyramid.h"
 #include "support/render_pair.h"
 #include "support/scenes.h"
 
@@ -44,23 +45,15 @@ TEST_F(SsrGpu, EachPyramidLevelIsTheMinimumOfTheFourBelow) {
   // Level 0 as the march reads it: the depth buffer (rows as GL stores them, bottom first), 1
   // past its edges.
   ivec2 below_size = HiZPyramid::paddedSize(screen);
-  std::vector<float> below(size_t(below_size.x * below_size.y), 1.0f);
-  for (int y = 0; y < screen.y; ++y)
-    for (int x = 0; x < screen.x; ++x)
-      below[size_t(y * below_size.x + x)] = depth[size_t(y * screen.x + x)];
+  std::vector<float> below = paddedDepth(depth, screen, below_size);
   for (int level = 1; level < pyramid.levels(); ++level) {
     const ivec2 size = HiZPyramid::levelSize(screen, level);
     const std::vector<float> here = readLevel(pyramid.texture(), level - 1, size);
+    const std::vector<float> want = minLevelAbove(below, below_size, size);
     for (int y = 0; y < size.y; ++y)
-      for (int x = 0; x < size.x; ++x) {
-        float want = 1.0f;
-        for (int j = 0; j < 2; ++j)
-          for (int i = 0; i < 2; ++i)
-            if (2 * x + i < below_size.x && 2 * y + j < below_size.y)
-              want = std::min(want, below[size_t((2 * y + j) * below_size.x + 2 * x + i)]);
-        ASSERT_EQ(here[size_t(y * size.x + x)], want)
+      for (int x = 0; x < size.x; ++x)
+        ASSERT_EQ(here[size_t(y * size.x + x)], want[size_t(y * size.x + x)])
             << "level " << level << " at " << x << "," << y;
-      }
     below = here;
     below_size = size;
   }
