@@ -8,6 +8,8 @@
 
 #include "core/error.h"
 #include "core/memory_cap.h"
+#include "core/supersample.h"
+#include "gpu/framebuffer.h"
 #include "methods/method.h"
 #include "scene/camera_file.h"
 
@@ -40,6 +42,13 @@ void addFrameOptions(CLI::App* app, FrameArgs& args) {
   app->add_option("--exposure", args.exposure, "exposure multiplier before tone mapping (> 0)")
       ->capture_default_str();
   app->add_option("--tonemap", args.tonemap, "tone map: clamp|reinhard|aces")
+      ->capture_default_str();
+}
+
+void addSsaaOption(CLI::App* app, FrameArgs& args) {
+  app->add_option("--ssaa", args.ssaa,
+                  "supersampling: render N x N sub-pixels per output pixel and box-filter them "
+                  "in linear radiance; the ray tracer traces the same sub-pixel positions (1..8)")
       ->capture_default_str();
 }
 
@@ -83,10 +92,36 @@ Scene loadSceneFromArgs(SceneArgs& args) {
 FrameSettings frameSettings(const FrameArgs& args) {
   if (args.order < 0 || args.order > 16) throwInput("--order {}: allowed 0..16", args.order);
   if (args.mip != "on" && args.mip != "off") throwInput("--mip {}: allowed on|off", args.mip);
+  if (args.ssaa < 1 || args.ssaa > kMaxSsaa)
+    throwInput("--ssaa {}: allowed 1..{} (sub-pixels per output pixel along each axis)", args.ssaa,
+               kMaxSsaa);
   FrameSettings s;
   s.order = args.order;
   s.mip = args.mip == "on";
+  s.pixel_scale = args.ssaa;
   return s;
+}
+
+ivec2 supersampledFrameSize(ivec2 size, int ssaa) {
+  const ivec2 frame = supersampledSize(size, ssaa);
+  if (ssaa == 1) return frame;
+  const int largest = gpu::maxFrameSide();
+  if (std::max(frame.x, frame.y) > largest)
+    throwInput(
+        "--ssaa {} with --size {}x{}: the frame would be {}x{}, beyond this driver's largest "
+        "frame side {} (use a smaller --ssaa or --size)",
+        ssaa, size.x, size.y, frame.x, frame.y, largest);
+  // The frame target (RGBA32F colour, R32UI ids, depth), its read-back, and the frame-sized
+  // buffers a method keeps (G-buffers, splat and zexel words, mirror images): 64 bytes a pixel
+  // bounds them all.
+  constexpr uint64_t kBytesPerPixel = 64;
+  const uint64_t bytes = saturatingMul(uint64_t(frame.x) * uint64_t(frame.y), kBytesPerPixel);
+  if (bytes > maxMemory())
+    throwInput(
+        "--ssaa {} with --size {}x{}: a {}x{} frame needs about {}; --max-memory allows {} (use "
+        "a smaller --ssaa or --size, or raise --max-memory)",
+        ssaa, size.x, size.y, frame.x, frame.y, formatBytes(bytes), formatBytes(maxMemory()));
+  return frame;
 }
 
 DisplaySettings displaySettings(const FrameArgs& args) {

@@ -31,10 +31,13 @@ struct FrameArgs {
   std::string mip = "on";
   float exposure = 1.0f;
   std::string tonemap = "aces";
+  int ssaa = 1;  // --ssaa N: render N x N sub-pixels per output pixel (render, compare, view)
 };
 
 void addSceneOptions(CLI::App* app, SceneArgs& args);
 void addFrameOptions(CLI::App* app, FrameArgs& args);
+// --ssaa N (1..8) for the commands that measure or show quality (bench times the output size).
+void addSsaaOption(CLI::App* app, FrameArgs& args);
 // Registers --<name> for every method parameter; given values land in `values`.
 void addMethodParamOptions(CLI::App* app, std::map<std::string, std::string>& values);
 
@@ -44,7 +47,11 @@ ivec2 parseSize(const std::string& text);
 // uses when --camera is not given: the two exclude each other), and the file's time (a
 // screenshot's) becomes args.time unless --time was given.
 Scene loadSceneFromArgs(SceneArgs& args);
+// The reflection order, mip setting and --ssaa (checked: 1..8) as a method sees them.
 FrameSettings frameSettings(const FrameArgs& args);
+// The size the frame is rendered at for an output of `size` under --ssaa (the current context's
+// limits and --max-memory checked: InputError naming --ssaa and --size).
+ivec2 supersampledFrameSize(ivec2 size, int ssaa);
 DisplaySettings displaySettings(const FrameArgs& args);
 std::unique_ptr<gpu::Context> openHeadlessContext();
 // Warns about given method parameters that none of `methods` uses.

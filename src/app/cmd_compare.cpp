@@ -6,6 +6,7 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/compare_analysis.h"
 #include "app/compare_common.h"
 #include "core/error.h"
 #include "eval/flip.h"
@@ -21,6 +22,8 @@ struct CompareArgs {
   std::string methods = "all";
   std::string reference = "raytrace";
   int path_frames = 0;
+  std::string reference_check = "auto";
+  int reference_spp = 64;
   std::string output;
   float heatmap_max = 0.25f;
   std::map<std::string, std::string> params;
@@ -49,25 +52,44 @@ Rendered renderTwice(FrameRenderer& renderer, Method& method, const View& view, 
   return r;
 }
 
-// The single view: each method renders it twice (a first and a steady frame).
-void compareView(CompareRun& run, const View& view, float time) {
-  Image reference_display;
-  IdImage mask;
+// The reference's side of the view: its image and mask, the causes of its reflector pixels (the
+// cause image written) and, when asked, its distance from a converged image.
+ReferenceFrame referenceFrame(CompareRun& run, const Image& shown, const IdImage& mask,
+                              const View& view, const View& frame_view, float time, int check_spp) {
+  ReferenceFrame reference{shown, mask, std::nullopt};
+  reference.causes = traceCauses(run, frame_view, time, mask);
+  run.report.cause_image = "causes.png";
+  writePng((run.dir / run.report.cause_image).string(), causeImage(*reference.causes, shown));
+  if (check_spp > 0) checkReference(run, view, time, reference, check_spp);
+  return reference;
+}
+
+// The single view: each method renders it twice (a first and a steady frame) at the frame size;
+// under --ssaa the times come from the same two frames of a fresh method at the output size.
+void compareView(CompareRun& run, const View& view, const View& frame_view, float time,
+                 int check_spp) {
+  ReferenceFrame reference;
   for (const std::string& name : run.methods) {
     auto method = run.renderer->createMethod(name, run.params, run.settings);
-    Rendered r =
-        renderTwice(*run.renderer, *method, view, time, run.settings, methodClock(run, *method));
-    Image shown = toDisplay(r.frame.color, run.display);
-    if (name == run.methods.front()) {
-      reference_display = shown;
-      mask = r.frame.ids;
-    }
+    Rendered r = renderTwice(*run.renderer, *method, frame_view, time, run.settings,
+                             methodClock(run, *method));
+    const RenderedFrame frame = downsample(std::move(r.frame), run.ssaa);
+    Image shown = toDisplay(frame.color, run.display);
+    if (name == run.methods.front())
+      reference = referenceFrame(run, shown, frame.ids, view, frame_view, time, check_spp);
     MethodReport m = describeMethod(run, name, *method);
     Image2D<float> flip;
-    m.metrics = compareImages(shown, reference_display, mask, &flip);
+    m.metrics = analyseFrame(run, shown, reference, m.regions, &flip);
+    if (run.timing_renderer) {
+      method.reset();  // the supersampled method's GPU memory, before the native one's
+      FrameSettings native = run.settings;
+      native.pixel_scale = 1;
+      auto timed = run.timing_renderer->createMethod(name, run.params, native);
+      r = renderTwice(*run.timing_renderer, *timed, view, time, native, methodClock(run, *timed));
+    }
     m.ms = r.ms;
     m.first_ms = r.first_ms;
-    MapFiles files = writeMaps(run, name, shown, reference_display, flip);
+    MapFiles files = writeMaps(run, name, shown, reference.display, flip);
     m.image = files.image;
     m.error_image = files.error_image;
     m.flip_image = files.flip_image;
@@ -96,10 +118,24 @@ const CameraDesc& pathCamera(const Scene& scene, const CompareArgs& args) {
   return camera;
 }
 
+// The converged reference's samples per pixel, or 0 where --reference-check is off.
+int referenceCheckSpp(const CompareArgs& args) {
+  if (args.reference_check != "auto" && args.reference_check != "on" &&
+      args.reference_check != "off")
+    throwInput("--reference-check {}: allowed auto|on|off", args.reference_check);
+  if (args.reference_spp < 1 || args.reference_spp > 4096)
+    throwInput("--reference-spp {}: allowed 1..4096", args.reference_spp);
+  const bool on = args.reference_check == "on" ||
+                  (args.reference_check == "auto" && args.reference == "raytrace");
+  return on ? args.reference_spp : 0;
+}
+
 int runCompare(CompareArgs& args) {
   CompareRun run;
   run.size = parseSize(args.frame.size);
   run.settings = frameSettings(args.frame);
+  run.ssaa = args.frame.ssaa;
+  const int check_spp = referenceCheckSpp(args);
   run.display = displaySettings(args.frame);
   if (!(args.heatmap_max > 0.0f)) throwInput("--heatmap-max {}: must be > 0", args.heatmap_max);
   run.heatmap_max = args.heatmap_max;
@@ -121,12 +157,18 @@ int runCompare(CompareArgs& args) {
   run.scene = &scene;
   const CameraDesc* path_camera = args.path_frames > 0 ? &pathCamera(scene, args) : nullptr;
   const View view(scene.camera(args.scene.camera).at(args.scene.time), run.size);
-  ensureDirectory(args.output);
-  run.dir = args.output;
   auto context = openHeadlessContext();
   run.context = context.get();
-  FrameRenderer renderer(scene, run.size);
+  run.frame_size = supersampledFrameSize(run.size, run.ssaa);
+  ensureDirectory(args.output);  // once the input is known to be good: no folder left otherwise
+  run.dir = args.output;
+  const View frame_view(scene.camera(args.scene.camera).at(args.scene.time), run.frame_size);
+  FrameRenderer renderer(scene, run.frame_size);
   run.renderer = &renderer;
+  // Times stay at the output size: under --ssaa each method is timed in a run of its own there.
+  std::unique_ptr<FrameRenderer> timing;
+  if (run.ssaa > 1) timing = std::make_unique<FrameRenderer>(scene, run.size);
+  run.timing_renderer = timing.get();
 
   CompareReport& report = run.report;
   report.scene = scene.name;
@@ -134,6 +176,16 @@ int runCompare(CompareArgs& args) {
   report.size = run.size;
   report.order = run.settings.order;
   report.reference = args.reference;
+  report.reference_info.ssaa = run.ssaa;
+  report.reflector_names = reflectorNames(scene);
+  report.timing =
+      run.ssaa > 1
+          ? fmt::format(
+                "each method timed in a separate run at {}x{} without supersampling (the images "
+                "and metrics come from the {}x{} frame)",
+                run.size.x, run.size.y, run.frame_size.x, run.frame_size.y)
+          : fmt::format("each method timed on the frames measured, at {}x{}", run.size.x,
+                        run.size.y);
   report.device = context->info().renderer + " (" + context->info().version + ")";
   report.cpu = cpuDescription();
   report.triangles = scene.triangleCount();
@@ -143,9 +195,9 @@ int runCompare(CompareArgs& args) {
       fmt::format("{}, exposure {}", toneMapName(run.display.tonemap), run.display.exposure);
 
   if (path_camera)
-    comparePath(run, *path_camera, args.path_frames);
+    comparePath(run, *path_camera, args.path_frames, check_spp);
   else
-    compareView(run, view, args.scene.time);
+    compareView(run, view, frame_view, args.scene.time, check_spp);
   writeCompareReport(args.output, report);
   spdlog::info("report: {}", (run.dir / "index.html").string());
   return 0;
@@ -204,6 +256,18 @@ Command addCompareCommand(CLI::App& parent) {
                    "view at --time (0..100000)")
       ->capture_default_str();
   addFrameOptions(cmd.app, args->frame);
+  args->frame.ssaa = 4;  // quality is measured with matched supersampling unless told otherwise
+  addSsaaOption(cmd.app, args->frame);
+  cmd.app
+      ->add_option("--reference-check", args->reference_check,
+                   "also render a converged reference (--reference-spp stratified samples a "
+                   "pixel) and report how far the matched reference is from it: auto (on when "
+                   "the reference is the ray tracer), on, off")
+      ->capture_default_str();
+  cmd.app
+      ->add_option("--reference-spp", args->reference_spp,
+                   "samples per pixel of the converged reference (1..4096)")
+      ->capture_default_str();
   cmd.app->add_option("-o,--output", args->output, "report directory")->required();
   cmd.app
       ->add_option("--heatmap-max", args->heatmap_max,

@@ -77,7 +77,10 @@ int runRender(RenderArgs& args) {
   Scene scene = loadSceneFromArgs(args.scene);
   const CameraDesc& camera = scene.camera(args.scene.camera);
   auto context = openHeadlessContext();
-  FrameRenderer renderer(scene, size);
+  // --ssaa N: the frame is N x N times the output and box-filtered down to it.
+  const int ssaa = args.frame.ssaa;
+  const ivec2 frame_size = supersampledFrameSize(size, ssaa);
+  FrameRenderer renderer(scene, frame_size);
   auto method = renderer.createMethod(args.method, args.params, settings);
 
   std::unique_ptr<TempFolder> folder;
@@ -90,8 +93,8 @@ int runRender(RenderArgs& args) {
     // Each frame at its own time: the scene and the camera's path move together.
     const float time = args.scene.time + float(double(i) / args.fps);
     Stopwatch frame_watch;
-    renderer.render(*method, View(camera.at(time), size), time, settings);
-    RenderedFrame frame = renderer.read();
+    renderer.render(*method, View(camera.at(time), frame_size), time, settings);
+    RenderedFrame frame = downsample(renderer.read(), ssaa);
     if (i == 0) first_ms = frame_watch.ms();
     writeImage(args.frames > 1 ? frameFileName(frame_name, i, args.frames) : frame_name,
                frame.color, display);
@@ -105,8 +108,10 @@ int runRender(RenderArgs& args) {
                   order < settings.order ? fmt::format(", {} requested", settings.order) : "",
                   fallback.empty() ? "" : ", drawn by envmap: the driver refused it");
   if (args.frames == 1)
-    spdlog::info("{}: {} on {} at {}x{} in {:.1f} ms ({})", args.output, args.method, scene.name,
-                 size.x, size.y, first_ms, order_text);
+    spdlog::info("{}: {} on {} at {}x{}{} in {:.1f} ms ({})", args.output, args.method, scene.name,
+                 size.x, size.y,
+                 ssaa > 1 ? fmt::format(" (--ssaa {}: {}x{} sub-pixels)", ssaa, ssaa, ssaa) : "",
+                 first_ms, order_text);
   else
     spdlog::info("{}: {} frames of {} on {} at {}x{}, t = {}..{} s at {} fps, in {:.1f} s ({})",
                  mp4 ? args.output : frameFileName(args.output, 0, args.frames) + "...",
@@ -127,6 +132,7 @@ Command addRenderCommand(CLI::App& parent) {
   cmd.app->add_option("--method", args->method, "the method (see `mirage compare --help`)")
       ->required();
   addFrameOptions(cmd.app, args->frame);
+  addSsaaOption(cmd.app, args->frame);
   cmd.app
       ->add_option("-o,--output", args->output,
                    "output image: .png (display) or .exr (linear); with --frames N > 1 frame "

@@ -13,6 +13,7 @@
 #include "gpu/context.h"
 #include "gpu/frame_timer.h"
 #include "methods/frame.h"
+#include "raytrace/tracer.h"
 
 namespace mirage::app {
 
@@ -20,7 +21,9 @@ namespace mirage::app {
 // report's header filled in.
 struct CompareRun {
   const Scene* scene = nullptr;
-  ivec2 size{0};
+  ivec2 size{0};        // the output: images, metrics
+  int ssaa = 1;         // --ssaa: sub-pixels per side
+  ivec2 frame_size{0};  // what the methods render at: size * ssaa
   FrameSettings settings;
   DisplaySettings display;
   float heatmap_max = 0.25f;
@@ -28,7 +31,9 @@ struct CompareRun {
   std::vector<std::string> methods;  // methods[0] is the reference
   std::filesystem::path dir;
   gpu::Context* context = nullptr;
-  FrameRenderer* renderer = nullptr;
+  FrameRenderer* renderer = nullptr;         // at frame_size
+  FrameRenderer* timing_renderer = nullptr;  // at size, for the times under --ssaa > 1
+  std::unique_ptr<RayTracer> tracer;         // error causes and the reference check
   CompareReport report;
 };
 
@@ -48,6 +53,8 @@ MapFiles writeMaps(const CompareRun& run, const std::string& stem, const Image& 
 
 // Renders `frames` frames along the path of `camera` (equal steps from its first key's time to its
 // last's), every method in turn on each frame, and fills `run.report` with per-frame metrics.
-void comparePath(CompareRun& run, const CameraDesc& camera, int frames);
+// Under --ssaa the frames are timed again at the output size; `check_spp` > 0 checks the
+// reference of the first frame against a converged one.
+void comparePath(CompareRun& run, const CameraDesc& camera, int frames, int check_spp);
 
 }  // namespace mirage::app

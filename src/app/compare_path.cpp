@@ -9,6 +9,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "app/compare_analysis.h"
 #include "app/compare_common.h"
 #include "core/progress.h"
 #include "eval/metrics.h"
@@ -37,6 +38,7 @@ std::vector<float> pathTimes(const CameraPath& path, int frames) {
 // the first, which does the captures and builds).
 void summarize(MethodReport& m) {
   m.metrics = meanMetrics(m.frame_metrics);
+  m.regions = meanRegions(m.frame_regions);
   m.worst = worstMetrics(m.frame_metrics);
   m.first_ms = m.frame_ms.front();
   double sum = 0.0;
@@ -49,7 +51,29 @@ void summarize(MethodReport& m) {
 
 }  // namespace
 
-void comparePath(CompareRun& run, const CameraDesc& camera, int frames) {
+// Under --ssaa: every method again along the path at the output size, for its frame times and
+// per-frame counters (what the quality run did at the larger size is not what a user would pay).
+void timePathNative(CompareRun& run, const CameraDesc& camera, std::vector<PathMethod>& methods) {
+  FrameSettings native = run.settings;
+  native.pixel_scale = 1;
+  const std::vector<float>& times = run.report.path.times;
+  Progress progress("timing", times.size() * methods.size());
+  for (PathMethod& p : methods) {
+    p.method.reset();
+    p.method = run.timing_renderer->createMethod(p.name, run.params, native);
+    p.report.frame_ms.clear();
+    p.report.frame_stats.clear();
+    for (float time : times) {
+      gpu::FrameTimer timer(p.clock);
+      run.timing_renderer->render(*p.method, View(camera.at(time), run.size), time, native, &timer);
+      p.report.frame_ms.push_back(timer.takeResults().front().total_ms);
+      p.report.frame_stats.push_back(p.method->stats());
+      progress.advance();
+    }
+  }
+}
+
+void comparePath(CompareRun& run, const CameraDesc& camera, int frames, int check_spp) {
   run.report.path.camera = camera.name;
   run.report.path.times = pathTimes(camera.path, frames);
   const std::vector<float>& times = run.report.path.times;
@@ -66,33 +90,37 @@ void comparePath(CompareRun& run, const CameraDesc& camera, int frames) {
   Progress progress("compare", size_t(frames) * methods.size());
   for (int f = 0; f < frames; ++f) {
     const float time = times[size_t(f)];
-    const View view(camera.at(time), run.size);
-    Image reference;
-    IdImage mask;
+    const View view(camera.at(time), run.size), frame_view(camera.at(time), run.frame_size);
+    ReferenceFrame reference;
     for (PathMethod& p : methods) {
       gpu::FrameTimer timer(p.clock);
-      run.renderer->render(*p.method, view, time, run.settings, &timer);
+      run.renderer->render(*p.method, frame_view, time, run.settings, &timer);
       p.report.frame_ms.push_back(timer.takeResults().front().total_ms);
       p.report.frame_stats.push_back(p.method->stats());
-      RenderedFrame frame = run.renderer->read();
+      const RenderedFrame frame = downsample(run.renderer->read(), run.ssaa);
       Image display = toDisplay(frame.color, run.display);
       if (&p == &methods.front()) {
-        reference = display;
-        mask = frame.ids;
+        reference = {display, frame.ids, std::nullopt};
+        reference.causes = traceCauses(run, frame_view, time, frame.ids);
+        if (f == 0 && check_spp > 0) checkReference(run, view, time, reference, check_spp);
       }
       Image2D<float> flip;
-      p.report.frame_metrics.push_back(compareImages(display, reference, mask, &flip));
+      p.report.frame_regions.emplace_back();
+      p.report.frame_metrics.push_back(
+          analyseFrame(run, display, reference, p.report.frame_regions.back(), &flip));
       if (shown.count(f)) {
         MapFiles files =
-            writeMaps(run, fmt::format("{}.frame{}", p.name, f), display, reference, flip);
+            writeMaps(run, fmt::format("{}.frame{}", p.name, f), display, reference.display, flip);
         p.report.shown.push_back({f, files.image, files.error_image, files.flip_image});
       }
       progress.advance();
     }
   }
+  if (run.timing_renderer) timePathNative(run, camera, methods);
   for (PathMethod& p : methods) {
     MethodReport m = describeMethod(run, p.name, *p.method);
     m.frame_metrics = std::move(p.report.frame_metrics);
+    m.frame_regions = std::move(p.report.frame_regions);
     m.frame_ms = std::move(p.report.frame_ms);
     m.frame_stats = std::move(p.report.frame_stats);
     m.shown = std::move(p.report.shown);

@@ -116,7 +116,7 @@ size_t countNonZero(const IdImage& mask) {
 }
 
 ImageMetrics compareImages(const Image& test, const Image& reference, const IdImage& mask,
-                           Image2D<float>* flip_map) {
+                           Image2D<float>* flip_map, Image2D<float>* ssim_map) {
   ImageMetrics m;
   m.psnr = psnrFromMse(meanSquaredError(test, reference));
   m.psnr_reflector = psnrFromMse(meanSquaredError(test, reference, &mask));
@@ -128,6 +128,7 @@ ImageMetrics compareImages(const Image& test, const Image& reference, const IdIm
   m.flip_reflector = meanOver(flip, &mask);
   if (flip_map) *flip_map = std::move(flip);
   m.reflector_pixels = countNonZero(mask);
+  if (ssim_map) *ssim_map = std::move(map);
   return m;
 }
 

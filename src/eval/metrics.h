@@ -30,7 +30,7 @@ struct ImageMetrics {
 // reflector pixel, the reflector figures are NaN. `flip_map`, if given, receives the FLIP map the
 // FLIP figures are the means of (the report draws it).
 ImageMetrics compareImages(const Image& test, const Image& reference, const IdImage& reflector_mask,
-                           Image2D<float>* flip_map = nullptr);
+                           Image2D<float>* flip_map = nullptr, Image2D<float>* ssim_map = nullptr);
 
 size_t countNonZero(const IdImage& mask);
 

@@ -283,7 +283,9 @@ std::string metricsJson(const CompareReport& r) {
   j["scene"] = r.scene;
   j["size"] = {r.size.x, r.size.y};
   j["order"] = r.order;
-  j["reference"] = r.reference;
+  j["reference"] = referenceJson(r);
+  j["ssaa"] = r.reference_info.ssaa;
+  j["timing"] = r.timing;
   j["device"] = r.device;
   j["cpu"] = r.cpu;
   j["triangles"] = r.triangles;
@@ -292,6 +294,7 @@ std::string metricsJson(const CompareReport& r) {
   nlohmann::json methods = nlohmann::json::object();
   for (const MethodReport& m : r.methods) {
     nlohmann::json e = metricsFields(m.metrics);
+    e.update(regionsJson(m.regions));
     e["ms"] = number(m.ms);
     e["first_frame_ms"] = number(m.first_ms);
     e["order_rendered"] = m.order_rendered;
@@ -332,6 +335,7 @@ std::string reportHtml(const CompareReport& r) {
 reference: <b>{reference}</b>.
 Device: {device}; CPU: {cpu}. Images after the display transform ({tonemap}); all metrics on those
 values.</p>
+{sampling}
 {reference_section}<section id=metrics><h2>Metrics</h2>
 <table><thead><tr>{header}</tr></thead><tbody>
 {rows}</tbody></table>
@@ -339,7 +343,7 @@ values.</p>
 among the methods other than the reference. Click a column header to sort (the reference stays
 on top).</p>
 </section>
-{reading}<section id=methods><h2>Methods against the reference</h2>
+{regions}{reading}<section id=methods><h2>Methods against the reference</h2>
 {figures}</section>
 <script>{script}</script>
 </body></html>
@@ -351,7 +355,8 @@ on top).</p>
       fmt::arg("cpu", escape(r.cpu)), fmt::arg("tonemap", escape(r.tonemap)),
       fmt::arg("reference_section", reference_section), fmt::arg("header", tableHeader(kColumns)),
       fmt::arg("rows", tableRows(r, kColumns)), fmt::arg("figures", figures),
-      fmt::arg("reading", readingSection(r)), fmt::arg("script", kScript));
+      fmt::arg("reading", readingSection(r)), fmt::arg("script", kScript),
+      fmt::arg("sampling", samplingNote(r)), fmt::arg("regions", regionSections(r)));
 }
 
 void writeCompareReport(const std::string& directory, const CompareReport& report) {

@@ -10,6 +10,7 @@
 
 #include "core/math.h"
 #include "eval/metrics.h"
+#include "eval/regions.h"
 
 namespace mirage {
 
@@ -18,6 +19,17 @@ struct ShownFrame {
   int frame = 0;
   std::string image, error_image, flip_image;
 };
+
+// A method's error split into regions of the frame: by reflector, and by cause (eval/causes.h).
+struct RegionSet {
+  std::map<std::string, RegionMetrics> reflectors;       // by the reflector instance's name
+  bool has_causes = false;                               // false: no ray tracer classified them
+  std::map<std::string, RegionMetrics> causes;           // by cause name; pixels add up to all
+  std::map<std::string, RegionMetrics> diffuse_objects;  // the `diffuse` cause by object name
+  RegionMetrics mixed;  // reflector pixels whose sub-pixels met different things
+};
+// The mean over frames of each region's figures (frames without the region left out).
+RegionSet meanRegions(const std::vector<RegionSet>& frames);
 
 struct MethodReport {
   std::string name;
@@ -32,6 +44,7 @@ struct MethodReport {
   std::string image;  // file names relative to the report directory
   std::string error_image;
   std::string flip_image;
+  RegionSet regions;
 
   // Camera-path reports (`--path-frames`): one entry per frame. `metrics` then holds the means
   // over the frames, `worst` the worst frame's value of each figure, `ms` the mean of the frames
@@ -40,6 +53,7 @@ struct MethodReport {
   std::vector<ImageMetrics> frame_metrics;
   std::vector<double> frame_ms;
   std::vector<std::map<std::string, double>> frame_stats;
+  std::vector<RegionSet> frame_regions;
   ImageMetrics worst;
   std::vector<ShownFrame> shown;
 };
@@ -50,14 +64,26 @@ struct PathInfo {
   std::vector<float> times;  // scene time of each frame, seconds
 };
 
+// How the reference was sampled, and how far that is from converged (`--reference-check`).
+struct ReferenceInfo {
+  int ssaa = 1;           // sub-pixels per side, the same for every method (--ssaa)
+  bool checked = false;   // a converged image was rendered
+  int converged_spp = 0;  // its stratified samples per pixel (--reference-spp)
+  double noise_floor_psnr = 0.0, noise_floor_psnr_reflector = 0.0;  // reference vs converged
+};
+
 struct CompareReport {
   std::string scene;
   std::string scene_description;
   ivec2 size{0};
   int order = 0;
   std::string reference = "raytrace";
-  std::string device;  // GL renderer
-  std::string cpu;     // CPU model
+  ReferenceInfo reference_info;
+  std::string timing;       // how the ms columns were measured (native runs under --ssaa)
+  std::string cause_image;  // the cause classification drawn (eval/causes.h), or empty
+  std::vector<std::string> reflector_names;  // in reflector-id order
+  std::string device;                        // GL renderer
+  std::string cpu;                           // CPU model
   size_t triangles = 0;
   float heatmap_max = 0.0f;  // error value drawn as the brightest heat-map colour
   float flip_ppd = 0.0f;     // pixels per degree the FLIP figures assume

@@ -44,6 +44,14 @@ double bestOf(const CompareReport& r, const Column& c);
 std::string tableHeader(std::span<const Column> columns);
 std::string tableRows(const CompareReport& r, std::span<const Column> columns);
 
+// The regions of a method (metrics.json: reflectors, causes, diffuse_objects, mixed), the
+// reference's object (method, ssaa, noise floor), the sampling and noise-floor paragraphs, and the
+// per-reflector and per-cause sections of the page (report_regions.cpp).
+nlohmann::json regionsJson(const RegionSet& regions);
+nlohmann::json referenceJson(const CompareReport& r);
+std::string samplingNote(const CompareReport& r);
+std::string regionSections(const CompareReport& r);
+
 // The camera-path additions: "path" at the top, "worst", "per_frame" and "images" per method.
 void addPathJson(const CompareReport& r, nlohmann::json& j);
 std::string pathReportHtml(const CompareReport& r);

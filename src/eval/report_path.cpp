@@ -41,6 +41,54 @@ ImageMetrics meanMetrics(const std::vector<ImageMetrics>& frames) {
   return out;
 }
 
+namespace {
+
+// The mean of each figure over the frames that have the region (pixels and sse: over all frames,
+// 0 where it is absent, so that the means still add up across regions).
+RegionMetrics meanRegion(const std::vector<const RegionMetrics*>& present, size_t frames) {
+  RegionMetrics out;
+  double pixels = 0.0, sse = 0.0, psnr = 0.0, ssim = 0.0, flip = 0.0;
+  int figures = 0;
+  for (const RegionMetrics* r : present) {
+    pixels += double(r->pixels);
+    sse += r->sse;
+    if (r->pixels == 0) continue;
+    psnr += r->psnr, ssim += r->ssim, flip += r->flip, ++figures;
+  }
+  out.pixels = size_t(std::lround(pixels / double(std::max<size_t>(frames, 1))));
+  out.sse = sse / double(std::max<size_t>(frames, 1));
+  out.psnr = figures ? psnr / figures : std::nan("");
+  out.ssim = figures ? ssim / figures : std::nan("");
+  out.flip = figures ? flip / figures : std::nan("");
+  return out;
+}
+
+std::map<std::string, RegionMetrics> meanRegionMap(
+    const std::vector<RegionSet>& frames, std::map<std::string, RegionMetrics> RegionSet::*member) {
+  std::map<std::string, std::vector<const RegionMetrics*>> by_name;
+  for (const RegionSet& f : frames)
+    for (const auto& [name, r] : f.*member) by_name[name].push_back(&r);
+  std::map<std::string, RegionMetrics> out;
+  for (const auto& [name, present] : by_name) out[name] = meanRegion(present, frames.size());
+  return out;
+}
+
+}  // namespace
+
+RegionSet meanRegions(const std::vector<RegionSet>& frames) {
+  RegionSet out;
+  out.reflectors = meanRegionMap(frames, &RegionSet::reflectors);
+  out.causes = meanRegionMap(frames, &RegionSet::causes);
+  out.diffuse_objects = meanRegionMap(frames, &RegionSet::diffuse_objects);
+  std::vector<const RegionMetrics*> mixed;
+  for (const RegionSet& f : frames) {
+    out.has_causes = out.has_causes || f.has_causes;
+    mixed.push_back(&f.mixed);
+  }
+  out.mixed = meanRegion(mixed, frames.size());
+  return out;
+}
+
 ImageMetrics worstMetrics(const std::vector<ImageMetrics>& frames) {
   ImageMetrics out;
   for (const Figure& f : kFigures) {
@@ -228,6 +276,7 @@ Camera path <b>{camera}</b>: {frames} frames from t = {first:.2f} s to {last:.2f
 renders the frames in order and keeps its state from one frame to the next, as in an animation.
 Device: {device}; CPU: {cpu}. Images after the display transform ({tonemap}); all metrics on those
 values. Images are kept for the first, middle and last frame.</p>
+{sampling}
 {reference_section}<section id=metrics><h2>Metrics over the path</h2>
 <table><thead><tr>{header}</tr></thead><tbody>
 {rows}</tbody></table>
@@ -239,7 +288,7 @@ reference. Click a column header to sort.</p>
 <section id=frames><h2>Reflector PSNR per frame (dB)</h2>
 {frame_table}
 </section>
-{reading}<section id=methods><h2>Methods against the reference</h2>
+{regions}{reading}<section id=methods><h2>Methods against the reference</h2>
 {figures}</section>
 <script>{script}</script>
 </body></html>
@@ -254,7 +303,8 @@ reference. Click a column header to sort.</p>
       fmt::arg("reference_section", ref ? referenceSection(r, *ref) : ""),
       fmt::arg("header", tableHeader(kPathColumns)), fmt::arg("rows", tableRows(r, kPathColumns)),
       fmt::arg("frame_table", frameTable(r)), fmt::arg("reading", readingSection(r)),
-      fmt::arg("figures", figures), fmt::arg("script", kScript));
+      fmt::arg("figures", figures), fmt::arg("script", kScript),
+      fmt::arg("sampling", samplingNote(r)), fmt::arg("regions", regionSections(r)));
 }
 
 }  // namespace report_html

@@ -1,10 +1,22 @@
 #include "gpu/framebuffer.h"
 
+#include <algorithm>
+
 #include <vector>
 
 #include "core/error.h"
 
 namespace mirage::gpu {
+
+int maxFrameSide() {
+  GLint texture = 0, renderbuffer = 0, width = 0, height = 0, viewport[2] = {0, 0};
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &texture);
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &renderbuffer);
+  glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &width);
+  glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &height);
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+  return std::min({texture, renderbuffer, width, height, viewport[0], viewport[1]});
+}
 
 Framebuffer::Framebuffer() {
   GLuint id = 0;

@@ -6,6 +6,10 @@
 
 namespace mirage::gpu {
 
+// The largest side of a frame the current context can render into: the least of its texture,
+// renderbuffer, framebuffer and viewport limits.
+int maxFrameSide();
+
 class Framebuffer {
  public:
   Framebuffer();

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/interrupt.h"
+#include "core/supersample.h"
 #include "methods/method_guard.h"
 
 namespace mirage {
@@ -60,6 +61,11 @@ void FrameRenderer::render(Method& method, const View& view, float time,
   method.render(frame);
   if (timer) timer->endFrame();
   if (counts) *counts = frameCounts(method.info(), before, method.stats());
+}
+
+RenderedFrame downsample(RenderedFrame frame, int n) {
+  if (n == 1) return frame;
+  return {boxDownsample(frame.color, n), majorityDownsample(frame.ids, n)};
 }
 
 RenderedFrame FrameRenderer::read() const {

@@ -14,6 +14,10 @@ struct RenderedFrame {
   IdImage ids;  // reflector id per pixel (0 = none)
 };
 
+// The frame reduced by --ssaa n (core/supersample.h): colour box-filtered in linear radiance,
+// ids by majority. n = 1 returns it unchanged.
+RenderedFrame downsample(RenderedFrame frame, int n);
+
 class FrameRenderer {
  public:
   // Needs a current OpenGL 4.5 context.

@@ -81,6 +81,22 @@ vec3 RayTracer::sampleTexture(int texture, vec2 uv) const {
   return mirage::sampleTexture(scene_.textures[size_t(texture)].image, uv);
 }
 
+vec3 RayTracer::shadingNormal(const Material& material, const SurfacePoint& s) const {
+  if (material.normal_map < 0) return s.normal;
+  return sh::perturb_normal(s.normal, s.tangent, sampleTexture(material.normal_map, s.uv));
+}
+
+RayTracer::Reflection RayTracer::reflection(const Ray& ray, const SurfacePoint& s, vec3 n) const {
+  Reflection out;
+  out.to_viewer = -glm::normalize(ray.direction);
+  out.facing = sh::facing_normal(n, s.geometric, out.to_viewer);
+  vec3 r = sh::reflect_direction(-out.to_viewer, out.facing);
+  // Leave the surface on the side the reflected ray goes to.
+  vec3 side = glm::dot(s.geometric, r) >= 0.0f ? s.geometric : -s.geometric;
+  out.ray = Ray{s.position + side * epsilon_, r, 0.0f, kInfinity};
+  return out;
+}
+
 template <bool kReference>
 vec3 RayTracer::shadeHit(const Ray& ray, const RayHit& hit, int bounces_left,
                          uint64_t& reflected_rays) const {
@@ -90,9 +106,7 @@ vec3 RayTracer::shadeHit(const Ray& ray, const RayHit& hit, int bounces_left,
   // The reference converts the material at every hit; render() reads the converted copy.
   const sh::MaterialData m =
       kReference ? material.gpuData() : material_data_[size_t(material_index)];
-  vec3 n = s.normal;
-  if (material.normal_map >= 0)
-    n = sh::perturb_normal(n, s.tangent, sampleTexture(material.normal_map, s.uv));
+  const vec3 n = shadingNormal(material, s);
   if (!material.isReflector()) {
     vec3 albedo = sh::material_albedo(m, s.uv);
     if (material.albedo_texture >= 0) albedo *= sampleTexture(material.albedo_texture, s.uv);
@@ -100,15 +114,10 @@ vec3 RayTracer::shadeHit(const Ray& ray, const RayHit& hit, int bounces_left,
     return sh::shade_diffuse(albedo, n, light.direction, light.color, light.ambient);
   }
   if (bounces_left <= 0) return sh::reflector_base(m);
-  vec3 to_viewer = -glm::normalize(ray.direction);
-  vec3 facing = sh::facing_normal(n, s.geometric, to_viewer);
-  vec3 r = sh::reflect_direction(-to_viewer, facing);
-  // Leave the surface on the side the reflected ray goes to.
-  vec3 side = glm::dot(s.geometric, r) >= 0.0f ? s.geometric : -s.geometric;
-  Ray reflected{s.position + side * epsilon_, r, 0.0f, kInfinity};
+  const Reflection reflected = reflection(ray, s, n);
   ++reflected_rays;
-  TracedRadiance incoming = traceRay<kReference>(reflected, bounces_left - 1, reflected_rays);
-  float cos_theta = std::max(glm::dot(facing, to_viewer), 0.0f);
+  TracedRadiance incoming = traceRay<kReference>(reflected.ray, bounces_left - 1, reflected_rays);
+  float cos_theta = std::max(glm::dot(reflected.facing, reflected.to_viewer), 0.0f);
   return sh::shade_reflector(m, cos_theta, incoming.distance, incoming.radiance);
 }
 
@@ -125,6 +134,34 @@ TracedRadiance RayTracer::traceRay(const Ray& ray, int bounces_left,
 
 TracedRadiance RayTracer::trace(const Ray& ray, int bounces_left, uint64_t& reflected_rays) const {
   return traceRay<false>(ray, bounces_left, reflected_rays);
+}
+
+uint32_t RayTracer::firstHit(const Ray& primary, int order) const {
+  const RayHit hit = ray_scene_.intersect(primary);
+  if (!hit.hit() || reflector_id_[size_t(hit.instance)] == 0) return 0;
+  if (order <= 0) return encodeFirstHit(FirstHit::kBeyondOrder, -1);
+  const Material& material =
+      scene_.materials[size_t(scene_.instances[size_t(hit.instance)].material)];
+  const SurfacePoint s = surface<false>(hit, true);
+  const RayHit next = ray_scene_.intersect(reflection(primary, s, shadingNormal(material, s)).ray);
+  if (!next.hit()) return encodeFirstHit(FirstHit::kEnvironment, -1);
+  if (reflector_id_[size_t(next.instance)] == 0)
+    return encodeFirstHit(FirstHit::kDiffuse, next.instance);
+  if (order == 1) return encodeFirstHit(FirstHit::kBeyondOrder, next.instance);
+  return encodeFirstHit(next.instance == hit.instance ? FirstHit::kSelf : FirstHit::kReflector,
+                        next.instance);
+}
+
+IdImage RayTracer::firstHits(const View& view, int order) const {
+  const ivec2 size = view.size();
+  IdImage out(size.x, size.y);
+  tbb::parallel_for(0, size.y, [&](int y) {
+    if (interruptRequested()) return;
+    for (int x = 0; x < size.x; ++x)
+      out(x, y) = firstHit(view.primaryRay(float(x) + 0.5f, float(y) + 0.5f), order);
+  });
+  checkInterrupt();
+  return out;
 }
 
 TraceResult RayTracer::render(const View& view, const TraceSettings& settings) const {

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "core/camera.h"
+#include "core/first_hit.h"
 #include "core/image.h"
 #include "raytrace/ray_scene.h"
 #include "scene/environment.h"
@@ -57,6 +58,10 @@ class RayTracer {
   // matrix, material data) recomputed at each hit, a separate centre ray per pixel when
   // spp > 1. Kept as the reference that render() must match bit for bit (tests/raytrace).
   TraceResult renderReference(const View& view, const TraceSettings& settings) const;
+  // Per pixel, what the reflected ray of the pixel centre's primary hit meets first
+  // (core/first_hit.h: 0 where the primary ray hits no reflector), at reflection order `order`:
+  // the same primary rays and reflected rays as render(), for error attribution.
+  IdImage firstHits(const View& view, int order) const;
   // The radiance along one ray with `bounces_left` reflections still allowed.
   TracedRadiance trace(const Ray& ray, int bounces_left, uint64_t& reflected_rays) const;
 
@@ -64,6 +69,14 @@ class RayTracer {
 
  private:
   struct SurfacePoint;
+  // The mirror-reflected ray leaving a surface point, and what shading needs of it.
+  struct Reflection {
+    Ray ray;
+    vec3 facing, to_viewer;
+  };
+  vec3 shadingNormal(const Material& material, const SurfacePoint& s) const;
+  Reflection reflection(const Ray& ray, const SurfacePoint& s, vec3 n) const;
+  uint32_t firstHit(const Ray& primary, int order) const;
   // kReference selects the original per-hit computations; both give the same floats.
   template <bool kReference>
   SurfacePoint surface(const RayHit& hit, bool reflector) const;

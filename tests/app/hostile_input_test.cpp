@@ -272,6 +272,23 @@ std::vector<Hostile> hostileInputs() {
        nullptr,
        "render --method envmap --size 0x0 -o out.png --scene sphere-over-checker",
        {"--size 0x0", "1..16384"}},
+      {"--ssaa 0", "", nullptr, render + "sphere-over-checker --ssaa 0", {"--ssaa 0", "1..8"}},
+      {"--ssaa 9",
+       "",
+       nullptr,
+       "compare --methods envmap --size 32x32 -o report --scene sphere-over-checker --ssaa 9",
+       {"--ssaa 9", "1..8"}},
+      {"--ssaa 8 beyond the driver's largest frame",
+       "",
+       nullptr,
+       "render --method envmap --size 4096x4096 -o out.png --scene sphere-over-checker --ssaa 8",
+       {"--ssaa 8", "32768x32768", "largest frame side"}},
+      {"--ssaa 4 over --max-memory",
+       "",
+       nullptr,
+       "compare --methods envmap --size 2048x2048 -o report --scene sphere-over-checker "
+       "--ssaa 4 --max-memory 1G",
+       {"--ssaa 4", "8192x8192", "--max-memory allows 1.0 GiB"}},
       {"unknown method",
        "",
        nullptr,
@@ -325,6 +342,7 @@ TEST(HostileInputs, EachExitsTwoWithAMessageNamingWhatIsWrong) {
     EXPECT_NE(run.output.find("mirage: error: "), std::string::npos) << h.what << "\n"
                                                                      << run.output;
     EXPECT_FALSE(fs::exists(dir / "out.png")) << h.what;
+    EXPECT_FALSE(fs::exists(dir / "report")) << h.what;  // compare's folder: not even made
     table += fmt::format("| {} | `{}` | {} | {:.2f} | {} |\n", h.what, replaceAll(args, "|", "\\|"),
                          run.code, seconds, tableMessage(run.output, dir.string()));
   }

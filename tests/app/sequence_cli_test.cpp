@@ -131,9 +131,10 @@ TEST_F(SequenceCli, BenchPlaysTheSceneAndCountsWhatEachMethodRedid) {
   walk.path.keys = {{0.0f, {2.8f, 1.7f, 3.2f}, {-0.8f, 1.4f, -3.0f}},
                     {1.0f, {1.2f, 1.65f, 2.4f}, {-0.6f, 1.4f, -3.2f}}};
   saveCameraFile((dir / "walk.json").string(), walk);
-  r = runMirage("bench --scene mirror-room --methods none --fps 30 --frames 3 --warmup 1 "
-                "--size 96x64 --camera-path " +
-                (dir / "walk.json").string() + " --json " + json.string());
+  r = runMirage(
+      "bench --scene mirror-room --methods none --fps 30 --frames 3 --warmup 1 "
+      "--size 96x64 --camera-path " +
+      (dir / "walk.json").string() + " --json " + json.string());
   ASSERT_EQ(r.code, 0) << r.output;
   std::ifstream walked(json);
   EXPECT_EQ(nlohmann::json::parse(walked)["camera"], "walked");

@@ -8,15 +8,19 @@ namespace mirage::test {
 
 RenderPair renderWithTruth(const Scene& scene, const std::string& method, ivec2 size,
                            const FrameSettings& settings,
-                           const std::map<std::string, std::string>& params, float time) {
-  FrameRenderer renderer(scene, size);
-  View view(scene.camera(), size);
-  auto m = renderer.createMethod(method, params, settings);
-  renderer.render(*m, view, time, settings);
-  RenderedFrame frame = renderer.read();
+                           const std::map<std::string, std::string>& params, float time, int ssaa) {
+  const ivec2 frame_size = size * ssaa;
+  FrameSettings scaled = settings;
+  scaled.pixel_scale = ssaa;
+  FrameRenderer renderer(scene, frame_size);
+  View view(scene.camera(), frame_size);
+  auto m = renderer.createMethod(method, params, scaled);
+  renderer.render(*m, view, time, scaled);
+  RenderedFrame frame = downsample(renderer.read(), ssaa);
   RayTracer tracer(scene, renderer.environment());
   tracer.prepare(time);
-  TraceResult truth = tracer.render(view, {settings.order, 1});
+  TraceResult t = tracer.render(view, {settings.order, 1});
+  RenderedFrame truth = downsample({std::move(t.color), std::move(t.ids)}, ssaa);
   return {displayed(frame.color), displayed(truth.color), frame.ids, truth.ids};
 }
 

@@ -1,5 +1,7 @@
 // A method's frame and the ray tracer's frame of the same view at the same order, both
-// display-encoded, with both ID buffers: what the image tests compare.
+// display-encoded, with both ID buffers: what the image tests compare. With ssaa > 1 both are
+// rendered at ssaa x ssaa sub-pixels per pixel and reduced as `mirage compare --ssaa` does
+// (matched sampling: what remains is the method's own error, not aliasing).
 #pragma once
 
 #include <map>
@@ -17,8 +19,8 @@ struct RenderPair {
 
 RenderPair renderWithTruth(const Scene& scene, const std::string& method, ivec2 size,
                            const FrameSettings& settings,
-                           const std::map<std::string, std::string>& params = {},
-                           float time = 0.0f);
+                           const std::map<std::string, std::string>& params = {}, float time = 0.0f,
+                           int ssaa = 1);
 
 // PSNR of the method's frame against the ray tracer's on the ray tracer's reflector pixels.
 double reflectorPsnr(const RenderPair& p);

@@ -36,6 +36,14 @@ KdTreeOptions treeOptions(const ParamValues& params) {
   return o;
 }
 
+// --hybrid-min-pixels m in sub-pixels of an N x N supersampled frame: m output pixels' worth,
+// except that the first pixel stays one sub-pixel — at native resolution m = 1 keeps every
+// triangle that covers any pixel centre, so it must keep every triangle that covers any sub-pixel
+// centre (N^2 would drop the triangles smaller than a pixel, which native resolution splats).
+int minSubPixels(int m, int n) {
+  return m == 0 ? 0 : (m - 1) * n * n + 1;
+}
+
 class HybridMethod final : public Method {
  public:
   explicit HybridMethod(const MethodSetup& setup)
@@ -45,9 +53,12 @@ class HybridMethod final : public Method {
         first_only_(setup.params.text("hybrid-projections") == "first"),
         keep_backfaces_(setup.params.text("hybrid-backfaces") == "keep"),
         eye_scaled_(setup.params.text("c3rc-rays") == "eye"),
-        splat_size_(setup.params.integer("splat-size")),
-        min_pixels_(setup.params.integer("hybrid-min-pixels")),
-        lod_density_(float(setup.params.real("hybrid-lod"))),
+        // Pixel sizes are output pixels: a frame supersampled N x N has N times the side and N^2
+        // times the count of them (FrameSettings::pixel_scale).
+        pixel_scale_(setup.settings.pixel_scale),
+        splat_size_(setup.params.integer("splat-size") * pixel_scale_),
+        min_pixels_(minSubPixels(setup.params.integer("hybrid-min-pixels"), pixel_scale_)),
+        lod_density_(float(setup.params.real("hybrid-lod")) / float(pixel_scale_ * pixel_scale_)),
         probe_size_(setup.params.integer("envmap-size")),
         index_bits_(shading::hybrid_index_bits(uint32_t(std::max<size_t>(store_.pointCount(), 1)))),
         splat_program_(gpu::Program::compute("methods/hybrid/hybrid_splat.comp")),
@@ -278,6 +289,7 @@ class HybridMethod final : public Method {
     splat_program_.set("u_item_count", int(itemCount()));
     splat_program_.set("u_first_only", first_only_ ? 1 : 0);
     splat_program_.set("u_splat_size", splat_size_);
+    splat_program_.set("u_max_splat", MIRAGE_HYBRID_MAX_SPLAT * pixel_scale_);
     splat_program_.set("u_index_bits", index_bits_);
     splat_program_.set("u_depth_scale", float(double((1ull << depth_bits) - 1) / double(reach)));
     splat_program_.set("u_proj", vec2(proj[2][2], proj[3][2]));
@@ -315,7 +327,7 @@ class HybridMethod final : public Method {
   PointStore store_;
   Culling culling_;
   bool first_only_, keep_backfaces_, eye_scaled_;
-  int splat_size_, min_pixels_;
+  int pixel_scale_, splat_size_, min_pixels_;
   float lod_density_;
   int probe_size_, index_bits_;
   gpu::Program splat_program_, resolve_program_, id_program_, base_program_;

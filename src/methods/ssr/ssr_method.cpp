@@ -1,6 +1,7 @@
 #include "methods/ssr/ssr_method.h"
 
 #include <array>
+#include <cmath>
 
 #include "gpu/buffer.h"
 #include "gpu/framebuffer.h"
@@ -54,7 +55,12 @@ class SsrMethod final : public Method {
   explicit SsrMethod(const MethodSetup& setup)
       : info_(setup.info),
         fallback_name_(setup.params.text("ssr-fallback")),
-        max_steps_(setup.params.integer("ssr-steps")),
+        // Cells along a ray grow with the frame's side: --ssaa N gives N times as many steps.
+        // --ssaa N adds log2 N levels to the pyramid, and a ray about two cells per level (one
+        // down, one across): steps + 2 log2 N keeps the share of rays that run out of steps at
+        // native resolution's (docs/reports.md has the sweep).
+        max_steps_(setup.params.integer("ssr-steps") +
+                   2 * int(std::ceil(std::log2(double(setup.settings.pixel_scale))))),
         // A fraction of the scene's bounding radius, fixed for the method's life.
         thickness_(float(setup.params.real("ssr-thickness")) *
                    std::max(setup.gpu.scene().bounds().radius(), 1e-6f)),
@@ -119,6 +125,10 @@ class SsrMethod final : public Method {
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
+    // The counts are atomics of the fragment shader: stats() reads them with
+    // glGetNamedBufferSubData, which GL orders after the draw only behind this barrier (without
+    // it, and without a glFinish between, llvmpipe returned zeros).
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     counted_ = true;
   }
 

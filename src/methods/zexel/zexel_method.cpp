@@ -50,11 +50,13 @@ class ZexelMethod final : public Method {
   explicit ZexelMethod(const MethodSetup& setup)
       : info_(setup.info),
         options_(mapOptions(setup.params)),
+        // Pixel sizes are output pixels (FrameSettings::pixel_scale: --ssaa).
+        pixel_scale_(setup.settings.pixel_scale),
         per_frame_(std::min(setup.params.integer("zexel-maps-per-frame"), options_.count)),
-        splat_(setup.params.integer("zexel-splat")),
+        splat_(setup.params.integer("zexel-splat") * pixel_scale_),
         threads_(setup.params.integer("zexel-threads")),
         keep_(setup.params.text("zexel-clear") == "off"),
-        fill_(setup.params.integer("zexel-fill")),
+        fill_(setup.params.integer("zexel-fill") * pixel_scale_),
         warp_program_(gpu::Program::compute("methods/zexel/zexel_warp.comp")),
         pyramid_program_(gpu::Program::compute("methods/zexel/zexel_pyramid.comp")),
         mirror_program_(
@@ -137,11 +139,15 @@ class ZexelMethod final : public Method {
         glm::dot(normal, m.maps.normal()) <= 0.0f)
       return std::nullopt;
     const View mirrored = frame.view.mirrored(point, normal);
-    ZexelWarpJob job{&m.maps, m.maps.select(mirrored.eye(), per_frame_), 0, splat_,
-                     screenRect(frame.view, frame.gpu.instanceBounds(m.maps.mirror()))};
+    ZexelWarpJob job{&m.maps,
+                     m.maps.select(mirrored.eye(), per_frame_),
+                     0,
+                     splat_,
+                     screenRect(frame.view, frame.gpu.instanceBounds(m.maps.mirror())),
+                     MIRAGE_ZEXEL_MAX_SPLAT * pixel_scale_};
     // Zexels at most a pixel apart for 1x1 splats, two for larger or magnification-sized ones:
     // the splats still close the surface.
-    const float spacing_goal = splat_ == 1 ? 1.0f : 2.0f;
+    const float spacing_goal = float(pixel_scale_) * (splat_ == pixel_scale_ ? 1.0f : 2.0f);
     job.level = level_ = m.maps.levelFor(job.chosen.front(), mirrored, spacing_goal);
     m.target.resize(frame.view.size(), keep_);
     if (options_.cpu_copies) {  // the CPU warper: the maps were kept on the CPU for it
@@ -171,7 +177,7 @@ class ZexelMethod final : public Method {
 
   const MethodInfo& info_;
   ZexelMapOptions options_;
-  int per_frame_, splat_, threads_;
+  int pixel_scale_, per_frame_, splat_, threads_;
   bool keep_;
   int fill_;
   gpu::Program warp_program_, pyramid_program_, mirror_program_, base_program_;

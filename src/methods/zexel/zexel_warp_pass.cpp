@@ -51,6 +51,7 @@ void warpOnGpu(const gpu::Program& program, const ZexelWarpJob& job, const View&
   program.set("u_co", output.eye());
   program.set("u_size", output.size());
   program.set("u_splat", job.splat);
+  program.set("u_max_splat", job.max_splat);
   program.set("u_rect", job.rect);
   program.use();
   const GLuint groups = GLuint((width + 7) / 8);
@@ -80,7 +81,8 @@ long warpOnCpu(const ZexelWarpJob& job, const View& output, int threads, ZexelWa
     const WarpCamera in = job.maps->warpCamera(job.chosen[slot], job.level);
     std::vector<uint32_t> shown;
     arena.execute([&] {
-      shown = warpOcclusionCompatible(map, in, out, size, {job.splat, threads != 1, job.rect});
+      shown = warpOcclusionCompatible(map, in, out, size,
+                                      {job.splat, threads != 1, job.rect, 8, job.max_splat});
     });
     warped += long(map.width) * map.height;
     // The second map fills what the first left and wins where it saw something nearer.
