@@ -101,6 +101,7 @@ Command addViewCommand(CLI::App& parent) {
   addSceneOptions(cmd.app, args->scene);
   cmd.app->add_option("--method", args->method, "the method shown first")->capture_default_str();
   addFrameOptions(cmd.app, args->frame);
+  addSsaaOption(cmd.app, args->frame);
   cmd.app->add_flag("--pause", args->pause, "start with the scene's time stopped");
   cmd.app->add_option("--frames", args->frames,
                       "render this many frames (1/60 s steps), then exit (0..1000000; 0: until "

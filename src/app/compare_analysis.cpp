@@ -96,6 +96,7 @@ void checkReference(CompareRun& run, const View& output_view, float time,
   TraceSettings settings;
   settings.order = run.settings.order;
   settings.spp = spp;
+  settings.jitter = true;  // stratified at random points: no position shared with --ssaa's grid
   const Image converged = toDisplay(tracer.render(output_view, settings).color, run.display);
   ReferenceInfo& info = run.report.reference_info;
   info.checked = true;

@@ -13,6 +13,27 @@ namespace mirage {
 
 namespace sh = shading;
 
+namespace {
+
+// A point in [0, 1)^2 for sample s of pixel (x, y): two rounds of a 32-bit integer hash
+// (Wellons' lowbias32), the same on every run and machine.
+uint32_t hash32(uint32_t v) {
+  v ^= v >> 16;
+  v *= 0x7feb352du;
+  v ^= v >> 15;
+  v *= 0x846ca68bu;
+  v ^= v >> 16;
+  return v;
+}
+
+vec2 strataJitter(uint32_t x, uint32_t y, uint32_t s) {
+  const uint32_t a = hash32(x * 0x9e3779b9u ^ hash32(y * 0x85ebca6bu ^ hash32(s)));
+  const uint32_t b = hash32(a ^ 0x68e31da4u);
+  return vec2(float(a >> 8), float(b >> 8)) * (1.0f / 16777216.0f);
+}
+
+}  // namespace
+
 struct RayTracer::SurfacePoint {
   vec3 position;
   vec3 normal;     // interpolated shading normal (unit), before normal mapping
@@ -196,17 +217,20 @@ void RayTracer::renderTiles(const View& view, const TraceSettings& settings,
   // Stratified sub-pixel positions: an n x n grid holding spp samples.
   const int spp = std::max(settings.spp, 1);
   const int grid = int(std::ceil(std::sqrt(double(spp))));
-  auto offset = [&](int s) {
-    float sx = spp == 1 ? 0.5f : (float(s % grid) + 0.5f) / float(grid);
-    float sy = spp == 1 ? 0.5f : (float(s / grid) + 0.5f) / float(grid);
+  const bool jitter = settings.jitter && spp > 1;
+  auto offset = [&](int x, int y, int s) {
+    vec2 in_stratum(0.5f);
+    if (jitter) in_stratum = strataJitter(uint32_t(x), uint32_t(y), uint32_t(s));
+    float sx = spp == 1 ? 0.5f : (float(s % grid) + in_stratum.x) / float(grid);
+    float sy = spp == 1 ? 0.5f : (float(s / grid) + in_stratum.y) / float(grid);
     return vec2(sx, sy);
   };
   // The sample whose ray is the pixel-centre ray, or -1: then the centre is traced on its own.
   // The reference traces it separately whenever spp > 1; an odd grid has it among the samples.
   int centre_sample = spp == 1 ? 0 : -1;
-  if (!kReference)
+  if (!kReference && !jitter)
     for (int s = 0; s < spp && centre_sample < 0; ++s)
-      if (offset(s) == vec2(0.5f)) centre_sample = s;
+      if (offset(0, 0, s) == vec2(0.5f)) centre_sample = s;
   constexpr int kTile = 16;
   const int tiles_x = (size.x + kTile - 1) / kTile, tiles_y = (size.y + kTile - 1) / kTile;
   Progress progress("raytrace", settings.progress ? size_t(tiles_x) * size_t(tiles_y) : 0);
@@ -238,7 +262,7 @@ void RayTracer::renderTiles(const View& view, const TraceSettings& settings,
           for (int y = ty * kTile; y < y1; ++y)
             for (int x = tx * kTile; x < x1; ++x) {
               for (int s = 0; s < spp; ++s) {
-                vec2 o = offset(s);
+                vec2 o = offset(x, y, s);
                 rays.push_back(view.primaryRay(float(x) + o.x, float(y) + o.y));
               }
               if (centre_sample < 0)
@@ -258,7 +282,7 @@ void RayTracer::renderTiles(const View& view, const TraceSettings& settings,
               Ray ray;
               RayHit hit;
               if (kReference) {
-                vec2 o = offset(s);
+                vec2 o = offset(x, y, s);
                 ray = view.primaryRay(float(x) + o.x, float(y) + o.y);
                 hit = ray_scene_.intersect(ray);
               } else {

@@ -23,6 +23,11 @@ struct TraceSettings {
   // viewer's background reference stops this way when the camera moves.
   const std::atomic<bool>* cancel = nullptr;
   bool progress = true;  // a progress bar on a terminal (background renders draw none)
+  // false: each sample at the centre of its stratum (a regular n x n grid: spp = N^2 traces the
+  // sub-pixel centres of --ssaa N exactly). true: at a random point of its stratum (a hash of the
+  // pixel and the sample, the same every run), so that a converged reference shares no position
+  // with any regular grid it checks.
+  bool jitter = false;
 };
 
 struct TraceStats {

@@ -13,15 +13,23 @@ layout(binding = 0) uniform sampler2D u_frame;
 
 uniform float u_exposure;
 uniform int u_tonemap;
+uniform int u_ssaa;  // --ssaa N: the frame's N x N texels per window pixel, averaged in linear
+
+// The window pixel's radiance: the mean of its block of frame texels (core/supersample's box).
+vec3 frame_radiance() {
+  const ivec2 first = ivec2(gl_FragCoord.xy) * u_ssaa;
+  vec3 sum = vec3(0.0f);
+  for (int j = 0; j < u_ssaa; ++j)
+    for (int i = 0; i < u_ssaa; ++i) sum += texelFetch(u_frame, first + ivec2(i, j), 0).rgb;
+  return sum / float(u_ssaa * u_ssaa);
+}
 
 layout(location = 0) out vec4 out_color;
 
 #ifndef VIEWER_TRUTH
 
 void main() {
-  out_color = vec4(display_transform(texelFetch(u_frame, ivec2(gl_FragCoord.xy), 0).rgb,
-                                     u_exposure, u_tonemap),
-                   1.0f);
+  out_color = vec4(display_transform(frame_radiance(), u_exposure, u_tonemap), 1.0f);
 }
 
 #else
@@ -37,8 +45,7 @@ uniform float u_heat_max;
 uniform vec2 u_size;
 
 void main() {
-  const vec3 method = display_transform(texelFetch(u_frame, ivec2(gl_FragCoord.xy), 0).rgb,
-                                        u_exposure, u_tonemap);
+  const vec3 method = display_transform(frame_radiance(), u_exposure, u_tonemap);
   const vec3 truth = display_transform(textureLod(u_truth, gl_FragCoord.xy / u_size, 0.0f).rgb,
                                        u_exposure, u_tonemap);
   vec3 c = gl_FragCoord.x >= u_split ? truth : method;

@@ -11,12 +11,12 @@ bool TruthRequest::operator==(const TruthRequest& o) const {
   const CameraDesc &a = camera, &b = o.camera;
   return a.position == b.position && a.target == b.target && a.up == b.up &&
          a.fov_y_degrees == b.fov_y_degrees && a.near_plane == b.near_plane &&
-         a.far_plane == b.far_plane && size == o.size && divisor == o.divisor && time == o.time &&
-         order == o.order;
+         a.far_plane == b.far_plane && size == o.size && divisor == o.divisor && ssaa == o.ssaa &&
+         time == o.time && order == o.order;
 }
 
 ivec2 TruthRequest::levelSize(int level) const {
-  const int shrink = divisor << std::max(0, kLevels - 2 - level);  // /4, /2, /1, /1 (4 spp)
+  const int shrink = divisor << std::max(0, kLevels - 2 - level);  // /4, /2, /1, /1 (matched)
   return glm::max(ivec2(8), size / shrink);
 }
 
@@ -95,7 +95,7 @@ void TruthRenderer::work() {
     for (int level = 0; level < TruthRequest::kLevels && !cancel_; ++level) {
       working_ = level;
       Stopwatch watch;
-      TraceSettings settings{request.order, TruthRequest::levelSpp(level), &cancel_, false};
+      TraceSettings settings{request.order, request.levelSpp(level), &cancel_, false};
       arena.execute([&] {
         tracer.prepare(request.time);
         tracer.render(View(request.camera, request.levelSize(level)), settings, result);

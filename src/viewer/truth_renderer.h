@@ -1,6 +1,8 @@
 // The viewer's ground truth: the ray tracer renders the current view on a background thread at
 // a reduced resolution, refining progressively — a quarter and a half of that resolution first,
-// then all of it, then 4 samples a pixel — and drops what it is doing when the view changes (the
+// then all of it, then as many samples a pixel as the frame has pixels in it, at their very
+// positions (matched sampling: the frame's divisor x divisor pixels, each of --ssaa N x N
+// sub-pixels) — and drops what it is doing when the view changes (the
 // camera, the scene time, the order or the size), starting over for the new one. The viewer
 // keeps drawing at its own rate and shows the newest finished image.
 #pragma once
@@ -24,6 +26,7 @@ struct TruthRequest {
   CameraDesc camera;
   ivec2 size{1};    // the viewer's frame size
   int divisor = 2;  // the reference's resolution is size / divisor
+  int ssaa = 1;     // the frame's sub-pixels per window pixel along each side (--ssaa)
   float time = 0.0f;
   int order = 1;
 
@@ -31,7 +34,11 @@ struct TruthRequest {
   // The image size of refinement `level` (0 .. kLevels - 1).
   ivec2 levelSize(int level) const;
   static constexpr int kLevels = 4;
-  static int levelSpp(int level) { return level == kLevels - 1 ? 4 : 1; }
+  // The last level traces the frame's own sample positions within each reference pixel: a
+  // regular grid of (divisor * ssaa)^2 (the ray tracer's strata centres).
+  int levelSpp(int level) const {
+    return level == kLevels - 1 ? (divisor * ssaa) * (divisor * ssaa) : 1;
+  }
 };
 
 struct TruthImage {

@@ -13,6 +13,7 @@
 
 #include "core/error.h"
 #include "core/interrupt.h"
+#include "core/supersample.h"
 #include "core/timer.h"
 #include "eval/metrics.h"
 #include "viewer/viewer_panel.h"
@@ -187,9 +188,10 @@ void ViewerApp::applyRequests() {
 // The renderer for this size and the method asked for; a method that cannot be made (a value
 // its construction refuses, a driver limit) leaves the last one in place and says why.
 bool ViewerApp::ensureStage(ivec2 size) {
-  if (!renderer_ || renderer_->size() != size) {
+  const ivec2 frame_size = supersampledSize(size, state_.settings.pixel_scale);
+  if (!renderer_ || renderer_->size() != frame_size) {
     method_.reset();
-    renderer_ = std::make_unique<FrameRenderer>(scene_, size);
+    renderer_ = std::make_unique<FrameRenderer>(scene_, frame_size);
     if (!truth_) {
       const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
       truth_ =
@@ -218,7 +220,8 @@ bool ViewerApp::ensureStage(ivec2 size) {
 
 void ViewerApp::renderFrame(ivec2 size) {
   gpu::FrameTimer timer(gpu::Clock::kWall);
-  const View view(camera_.desc(), size);
+  // --ssaa N: the frame has N x N sub-pixels per window pixel; the output pass averages them.
+  const View view(camera_.desc(), supersampledSize(size, state_.settings.pixel_scale));
   try {
     renderer_->render(*method_, view, state_.clock.time, state_.settings, &timer,
                       &state_.readout.counts);
@@ -243,7 +246,9 @@ void ViewerApp::renderFrame(ivec2 size) {
   r.gl_handles = gpu::liveHandles().total();
   r.order_rendered = method_->orderRendered(state_.settings.order);
   r.fallback = method_->fallbackReason();
-  if (frame_ % 15 == 0) r.reflector_pixels = countNonZero(renderer_->target().readIds());
+  if (frame_ % 15 == 0)
+    r.reflector_pixels = countNonZero(
+        majorityDownsample(renderer_->target().readIds(), state_.settings.pixel_scale));
   state_.size = size;
 }
 
@@ -252,6 +257,7 @@ TruthRequest ViewerApp::truthRequest(ivec2 size) const {
   request.camera = camera_.desc();
   request.size = size;
   request.divisor = std::clamp(state_.truth_divisor, 1, 8);
+  request.ssaa = state_.settings.pixel_scale;
   request.time = state_.clock.time;
   request.order = state_.settings.order;
   return request;
@@ -293,17 +299,19 @@ void ViewerApp::updateTruth(ivec2 size, bool last_frame) {
   state_.truth_status =
       truth_image_.level < 0
           ? "rendering..."
-          : fmt::format("{} {}x{}, {} spp, {:.0f} ms{}", current ? "reference" : "stale reference",
-                        s.x, s.y, TruthRequest::levelSpp(truth_image_.level), truth_image_.ms,
-                        working >= 0 ? fmt::format(" (refining: level {} of {})", working + 1,
-                                                   TruthRequest::kLevels)
-                                     : "");
+          : fmt::format(
+                "{} {}x{}, {} spp, {:.0f} ms{}", current ? "reference" : "stale reference", s.x,
+                s.y, truth_image_.request.levelSpp(truth_image_.level), truth_image_.ms,
+                working >= 0
+                    ? fmt::format(" (refining: level {} of {})", working + 1, TruthRequest::kLevels)
+                    : "");
 }
 
 void ViewerApp::present(ivec2 size) {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   OutputSettings output = state_.output;
   output.display = options_.display;
+  output.ssaa = state_.settings.pixel_scale;
   output_->draw(renderer_->target().color(), size, output);
 }
 

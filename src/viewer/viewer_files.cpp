@@ -59,7 +59,8 @@ void ViewerApp::screenshot(ivec2 size, const std::string& path) {
     shown.flipVertically();
     writePng(path, shown);
   } else {
-    writeImage(path, renderer_->read().color, options_.display);
+    writeImage(path, downsample(renderer_->read(), state_.settings.pixel_scale).color,
+               options_.display);
   }
   CameraDesc camera = camera_.desc();
   camera.name = "screenshot";

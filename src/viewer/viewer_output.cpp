@@ -50,6 +50,7 @@ void ViewerOutput::draw(const gpu::Texture& frame, ivec2 size, const OutputSetti
   const gpu::Program& program = truth ? with_truth_ : plain_;
   program.set("u_exposure", s.display.exposure);
   program.set("u_tonemap", int(s.display.tonemap));
+  program.set("u_ssaa", std::max(s.ssaa, 1));
   if (truth) {
     program.set("u_split", split);
     program.set("u_line", s.truth == TruthMode::kSplit ? 1 : 0);

@@ -24,6 +24,7 @@ struct OutputSettings {
   bool heatmap = false;
   float heat_max = 0.25f;  // the error drawn as the brightest colour
   float split = 0.5f;      // the split line, a fraction of the width
+  int ssaa = 1;            // the frame's sub-pixels per window pixel along each side (--ssaa)
 };
 
 class ViewerOutput {
@@ -35,7 +36,8 @@ class ViewerOutput {
   void clearTruth() { has_truth_ = false; }
   bool hasTruth() const { return has_truth_; }
 
-  // Draws `frame` into the bound framebuffer, `size` pixels.
+  // Draws `frame` into the bound framebuffer, `size` pixels (the frame: size * settings.ssaa,
+  // box-filtered in linear radiance before the display transform).
   void draw(const gpu::Texture& frame, ivec2 size, const OutputSettings& settings) const;
 
  private:

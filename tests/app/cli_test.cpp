@@ -1,5 +1,6 @@
 // The command-line contract: bad input exits with 2 and one message naming the problem and the
 // allowed values; no OpenGL driver exits with 3; good input writes its files.
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -148,6 +149,58 @@ TEST_F(CliWithGl, CompareWritesTheReport) {
     EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
 }
 
+// metrics.json under matched sampling: the reference's sampling and noise floor, each method's
+// error per reflector and per cause, and the sums that make them a partition of the reflector
+// pixels (pixel counts and squared errors add up to the method's reflector totals).
+TEST_F(CliWithGl, CompareSplitsTheErrorByReflectorAndCause) {
+  auto dir = testTempDir("cli");
+  CliResult r =
+      runMirage("compare --scene spheres9 --methods envmap,billboard --ssaa 2 --size 96x64 -o " +
+                dir.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  std::ifstream in(dir / "metrics.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  const nlohmann::json& ref = j["reference"];
+  EXPECT_EQ(ref["method"], "raytrace");
+  EXPECT_EQ(ref["ssaa"], 2);
+  EXPECT_EQ(ref["converged_spp"], 64);
+  ASSERT_TRUE(ref["noise_floor_psnr"].is_number()) << ref;
+  ASSERT_TRUE(ref["noise_floor_psnr_reflector"].is_number()) << ref;
+  EXPECT_GT(ref["noise_floor_psnr"].get<double>(), 25.0);
+  EXPECT_NE(j["timing"].get<std::string>().find("separate run at 96x64"), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(dir / "causes.png"));
+  for (const char* name : {"envmap", "billboard"}) {
+    const nlohmann::json& m = j["methods"][name];
+    const double pixels = m["reflector_pixels"].get<double>();
+    ASSERT_GT(pixels, 100.0) << name;
+    // PSNR = 10 log10(1 / MSE) and MSE = SSE / (3 pixels).
+    const double sse = 3.0 * pixels * std::pow(10.0, -m["psnr_reflector"].get<double>() / 10.0);
+    double cause_pixels = 0.0, cause_sse = 0.0, reflector_pixels = 0.0;
+    for (const auto& [cause, c] : m["causes"].items()) {
+      cause_pixels += c["pixels"].get<double>();
+      cause_sse += c["sse"].get<double>();
+    }
+    for (const auto& [reflector, c] : m["reflectors"].items())
+      reflector_pixels += c["pixels"].get<double>();
+    EXPECT_EQ(cause_pixels, pixels) << name;
+    EXPECT_NEAR(cause_sse, sse, 1e-6 * sse) << name;
+    EXPECT_EQ(reflector_pixels, pixels) << name;
+    EXPECT_EQ(m["reflectors"].size(), 9u) << name;  // nine mirror spheres, all in view
+    // At order 2 the spheres see the sky, the floor and one another.
+    for (const char* cause : {"environment", "diffuse", "reflector"})
+      EXPECT_GT(m["causes"][cause]["pixels"].get<double>(), 0.0) << name << " " << cause;
+    double objects = 0.0;
+    for (const auto& [object, c] : m["diffuse_objects"].items())
+      objects += c["pixels"].get<double>();
+    EXPECT_EQ(objects, m["causes"]["diffuse"]["pixels"].get<double>()) << name;
+    EXPECT_GT(m["mixed"]["pixels"].get<double>(), 0.0) << name;
+    EXPECT_LT(m["mixed"]["pixels"].get<double>(), pixels) << name;
+  }
+  // The reference against itself: no error anywhere.
+  for (const auto& [cause, c] : j["methods"]["raytrace"]["causes"].items())
+    EXPECT_EQ(c["sse"].get<double>(), 0.0) << cause;
+}
+
 // Quality along a walk: every method renders the path's frames in sequence; metrics.json holds
 // one value per frame and method, the report keeps the first, middle and last frame's images.
 TEST_F(CliWithGl, ComparePathFramesWritesPerFrameMetrics) {
@@ -160,6 +213,7 @@ TEST_F(CliWithGl, ComparePathFramesWritesPerFrameMetrics) {
   std::ifstream in(dir / "metrics.json");
   nlohmann::json j = nlohmann::json::parse(in);
   EXPECT_EQ(j["reference"]["method"], "planar");
+  EXPECT_EQ(j["reference"]["checked"], false);  // the converged check is the ray tracer's
   EXPECT_EQ(j["path"]["camera"], "walk");
   EXPECT_EQ(j["path"]["frames"], 3);
   std::vector<float> times = j["path"]["times"];
@@ -173,6 +227,9 @@ TEST_F(CliWithGl, ComparePathFramesWritesPerFrameMetrics) {
     for (const char* key : {"psnr", "psnr_reflector", "ssim", "flip_reflector", "ms"})
       EXPECT_EQ(m["per_frame"][key].size(), 3u) << name << "." << key;
     EXPECT_TRUE(m.contains("worst")) << name;
+    // Per reflector and per cause, averaged over the frames like the other figures.
+    EXPECT_FALSE(m["reflectors"].empty()) << name;
+    EXPECT_FALSE(m["causes"].empty()) << name;
     ASSERT_EQ(m["images"].size(), 3u) << name;
     for (const nlohmann::json& image : m["images"])
       for (const char* key : {"image", "error_image", "flip_image"})

@@ -285,21 +285,23 @@ TEST(ViewUnderXvfb, F12WritesShotsAndResizingRendersAtTheNewSize) {
   EXPECT_GT(psnrOf(second, dir / "r.png"), 45.0);
 }
 
-// The split shows the method left of the line and the reference right of it: with the reference
-// at full resolution, the halves are `render`'s frames of the method and of the ray tracer at 4
-// samples; the PSNR the viewer reports is compare's.
+// The split shows the method left of the line and the reference right of it: with --ssaa 2 and
+// the reference at full resolution, the halves are `render --ssaa 2`'s frame of the method and the
+// ray tracer's at 4 samples (its 2 x 2 strata centres: the frame's sub-pixels), and the PSNR the
+// viewer reports is that of `compare --ssaa 2` (matched sampling).
 TEST(ViewUnderXvfb, GroundTruthSplitAndPsnrAreTheHeadlessOnes) {
   MIRAGE_NEED_DISPLAY();
   const auto dir = testTempDir("view-truth");
   const std::string scene = " --scene sphere-over-checker --size 240x160 --order 1";
   const CliResult v =
       runMirage("view" + scene +
-                " --method envmap --frames 3 --truth split --truth-resolution 1 "
+                " --method envmap --frames 3 --truth split --truth-resolution 1 --ssaa 2 "
                 "--screenshot " +
                 (dir / "split.png").string() + " --report " + (dir / "report.json").string());
   ASSERT_EQ(v.code, 0) << v.output;
-  ASSERT_EQ(runMirage("render" + scene + " --method envmap -o " + (dir / "m.png").string()).code,
-            0);
+  ASSERT_EQ(
+      runMirage("render" + scene + " --method envmap --ssaa 2 -o " + (dir / "m.png").string()).code,
+      0);
   ASSERT_EQ(
       runMirage("render" + scene + " --method raytrace --spp 4 -o " + (dir / "t.png").string())
           .code,
@@ -326,9 +328,8 @@ TEST(ViewUnderXvfb, GroundTruthSplitAndPsnrAreTheHeadlessOnes) {
   EXPECT_LT(right / nr, 2e-3);
   const nlohmann::json j = readJson(dir / "report.json");
   EXPECT_EQ(j["truth"]["level"], 3);
-  const CliResult c =
-      runMirage("compare" + scene + " --methods envmap,raytrace --spp 4 --ssaa 1 -o " +
-                (dir / "cmp").string());
+  const CliResult c = runMirage("compare" + scene + " --methods envmap,raytrace --ssaa 2 -o " +
+                                (dir / "cmp").string());
   ASSERT_EQ(c.code, 0) << c.output;
   const nlohmann::json m = readJson(dir / "cmp" / "metrics.json");
   ASSERT_TRUE(j["psnr_reflector"].is_number()) << j;
