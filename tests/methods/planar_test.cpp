@@ -28,11 +28,12 @@ TEST_F(PlanarImages, MirrorRoomIsExact) {
   const Scene scene = makeBuiltinScene("mirror-room");
   FrameSettings settings;
   settings.order = 1;
-  RenderPair p = renderWithTruth(scene, "planar", {320, 240}, settings);
+  RenderPair p = renderWithTruth(scene, "planar", {320, 240}, settings, {}, 0.0f, kMatchedSsaa);
   std::printf("mirror-room reflector PSNR: %.2f dB\n", reflectorPsnr(p));
-  // Measured at 720x512: 107.9 dB on the mirror (the issue asks for 40).
-  EXPECT_GE(reflectorPsnr(p), 40.0);
-  EXPECT_TRUE(psnrAtLeast(p.gpu, p.cpu, 40.0, nullptr, "planar-mirror-room"));
+  // Measured under matched 2x2 sampling: 66.1 dB on the mirror (float rounding between the
+  // rasteriser and Embree at a few sub-pixels); exact is 60 dB or more.
+  EXPECT_GE(reflectorPsnr(p), 60.0);
+  EXPECT_TRUE(psnrAtLeast(p.gpu, p.cpu, 60.0, nullptr, "planar-mirror-room"));
 }
 
 // Two facing mirrors: each order adds the mirror seen in the other mirror.
@@ -41,10 +42,11 @@ TEST_F(PlanarImages, MirrorsInMirrorsRecurseToTheOrder) {
   for (int order : {1, 2, 4}) {
     FrameSettings settings;
     settings.order = order;
-    RenderPair p = renderWithTruth(scene, "planar", {320, 240}, settings);
+    RenderPair p = renderWithTruth(scene, "planar", {320, 240}, settings, {}, 0.0f, kMatchedSsaa);
     std::printf("two-mirrors order %d: reflector PSNR %.2f dB\n", order, reflectorPsnr(p));
-    // Measured at 720x512: 50.7, 46.5 and 45.5 dB.
-    EXPECT_GE(reflectorPsnr(p), 40.0) << "order " << order;
+    // Measured under matched 2x2 sampling: 48.8, 48.7 and 48.4 dB (the mirrors' frames meet
+    // the glass at grazing angles, where a few sub-pixels fall to the other side).
+    EXPECT_GE(reflectorPsnr(p), 45.0) << "order " << order;
   }
   // One mirrored view per visible mirror, then one per mirror seen in it, and so on.
   const double order1 = statsOf(scene, {160, 120}, 1).at("mirrored_views");

@@ -22,6 +22,11 @@ RenderPair renderWithTruth(const Scene& scene, const std::string& method, ivec2 
                            const std::map<std::string, std::string>& params = {}, float time = 0.0f,
                            int ssaa = 1);
 
+// The supersampling of image tests that assert a method's closeness to the ray tracer: matched
+// 2 x 2 (both sides at the same sub-pixel positions; a quarter of compare's 4 x 4 cost), so that
+// their thresholds bound the method's error, not aliasing.
+inline constexpr int kMatchedSsaa = 2;
+
 // PSNR of the method's frame against the ray tracer's on the ray tracer's reflector pixels.
 double reflectorPsnr(const RenderPair& p);
 

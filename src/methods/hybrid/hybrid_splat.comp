@@ -24,6 +24,7 @@ uniform int u_item_count;
 uniform int u_first_only;    // 1: the first projection only
 uniform int u_splat_size;    // s: an s×s square; 0: from the magnification
 uniform int u_max_splat;     // the largest magnification-sized side (scaled with --ssaa)
+uniform int u_pixel_scale;   // frame pixels per output pixel along a side (--ssaa)
 uniform int u_index_bits;
 uniform float u_depth_scale;
 uniform vec2 u_proj;         // the projection matrix's [2][2] and [3][2]: eye depth from z
@@ -38,13 +39,16 @@ float surface_eye_depth(ivec2 pixel) {
 
 // The splat's side in pixels: fixed, or (u_splat_size = 0) the point spacing magnified to the
 // screen — by the C3RC (c3rc_spread: its growth and tilts) and by the perspective at the
-// reflector point — rounded up, so that neighbouring points close the surface.
+// reflector point — rounded up to whole output pixels (u_pixel_scale frame pixels each under
+// --ssaa: a supersampled frame's splats then cover what the native frame's do), so that
+// neighbouring points close the surface.
 int splat_side(C3rcData c, vec4 proj, vec3 base, float spacing, float eye_depth) {
   if (u_splat_size > 0) return u_splat_size;
   float spread = c3rc_spread(c, proj, normalize(frame.eye.xyz - base));
   float on_screen = spacing / sqrt(max(spread, 1.0e-12f));
   float pixels = on_screen * frame.viewport.y / (2.0f * frame.viewport.z * max(eye_depth, 1.0e-6f));
-  return clamp(int(ceil(pixels)), 1, u_max_splat);
+  return clamp(int(ceil(pixels / float(u_pixel_scale))) * u_pixel_scale, u_pixel_scale,
+               u_max_splat);
 }
 
 uint splat(C3rcData c, vec4 proj, vec3 q, float spacing, uint index) {

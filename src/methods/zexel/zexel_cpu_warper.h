@@ -40,6 +40,7 @@ struct WarpOptions {
   ivec4 rect{0, 0, 1 << 30, 1 << 30};  // only pixels in [xy, zw) are written (a mirror's)
   int wedges = 8;  // each sheet split into this many wedges about the epipole (parallel tasks)
   int largest = kMaxAutoSplat;  // the largest magnification-sized splat (scaled with --ssaa)
+  int unit = 1;                 // automatic splats in whole output pixels of this many (--ssaa)
 };
 
 // Per output pixel (rows from the bottom) the index of the zexel shown there, or kNoZexel.

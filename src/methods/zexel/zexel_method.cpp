@@ -144,7 +144,8 @@ class ZexelMethod final : public Method {
                      0,
                      splat_,
                      screenRect(frame.view, frame.gpu.instanceBounds(m.maps.mirror())),
-                     MIRAGE_ZEXEL_MAX_SPLAT * pixel_scale_};
+                     MIRAGE_ZEXEL_MAX_SPLAT * pixel_scale_,
+                     pixel_scale_};
     // Zexels at most a pixel apart for 1x1 splats, two for larger or magnification-sized ones:
     // the splats still close the surface.
     const float spacing_goal = float(pixel_scale_) * (splat_ == pixel_scale_ ? 1.0f : 2.0f);

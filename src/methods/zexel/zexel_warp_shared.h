@@ -29,16 +29,18 @@ SHARED_FN vec3 zexel_warp(mat3 po_inverse, mat3 pi, vec3 ci, vec3 co, float delt
 
 // The side of the square splat that closes the gaps between a zexel and its neighbours in the
 // output: the warp's local magnification, the landing points of x_i + (1, 0) and x_i + (0, 1)
-// at the same disparity (a surface facing the reference camera), rounded up, within [1, largest].
+// at the same disparity (a surface facing the reference camera), rounded up to whole output
+// pixels of `unit` frame pixels each (--ssaa: a supersampled frame's splats cover what the native
+// frame's do), within [unit, largest].
 SHARED_FN int zexel_splat_side(mat3 po_inverse, mat3 pi, vec3 ci, vec3 co, float delta, vec2 xi,
-                               vec2 landed, int largest) {
+                               vec2 landed, int largest, int unit) {
   vec3 right = zexel_warp(po_inverse, pi, ci, co, delta, xi + vec2(1.0f, 0.0f));
   vec3 up = zexel_warp(po_inverse, pi, ci, co, delta, xi + vec2(0.0f, 1.0f));
   float spread = max(max(abs(right.x - landed.x), abs(right.y - landed.y)),
                      max(abs(up.x - landed.x), abs(up.y - landed.y)));
   // Non-finite (a neighbour behind the camera) or huge: the largest splat.
   if (!(spread < float(largest))) return largest;
-  return clamp(int(ceil(spread)), 1, largest);
+  return clamp(int(ceil(spread / float(unit))) * unit, unit, largest);
 }
 
 // Eq. 4: the disparity from the classic [0, 1] GL depth of a perspective camera.
