@@ -267,5 +267,48 @@ TEST(Report, PathHtmlShowsEveryFrameAndOnlyTheKeptImages) {
             std::string::npos);
 }
 
+// Per reflector and per cause: the JSON carries them per method and the reference as an object
+// with its noise floor; the page marks the best method of each reflector (the reference left
+// out) and shows each method's share of squared error per cause.
+TEST(Report, RegionsAndTheReferencesNoiseFloor) {
+  CompareReport r = sampleReport();
+  r.reflector_names = {"left", "right"};
+  r.reference_info = {4, true, 64, 41.5, 37.25};
+  r.cause_image = "causes.png";
+  auto region = [](size_t pixels, double psnr, double sse) {
+    RegionMetrics m;
+    m.pixels = pixels, m.psnr = psnr, m.sse = sse, m.ssim = 0.9, m.flip = 0.1;
+    return m;
+  };
+  for (MethodReport& m : r.methods) {
+    const bool envmap = m.name == "envmap";
+    m.regions.reflectors = {{"left", region(1000, envmap ? 25.0 : 15.0, 1.0)},
+                            {"right", region(234, envmap ? 11.0 : 14.0, 2.0)}};
+    m.regions.has_causes = true;
+    m.regions.causes = {{"environment", region(900, 30.0, 1.0)},
+                        {"diffuse", region(334, 12.0, 3.0)}};
+    m.regions.diffuse_objects = {{"floor", region(334, 12.0, 3.0)}};
+    m.regions.mixed = region(50, 20.0, 0.5);
+  }
+  const nlohmann::json j = nlohmann::json::parse(metricsJson(r));
+  EXPECT_EQ(j["reference"]["method"], "raytrace");
+  EXPECT_EQ(j["reference"]["ssaa"], 4);
+  EXPECT_EQ(j["reference"]["noise_floor_psnr_reflector"], 37.25);
+  EXPECT_EQ(j["methods"]["envmap"]["reflectors"]["left"]["psnr"], 25.0);
+  EXPECT_EQ(j["methods"]["envmap"]["causes"]["diffuse"]["sse"], 3.0);
+  EXPECT_EQ(j["methods"]["envmap"]["diffuse_objects"]["floor"]["pixels"], 334);
+  EXPECT_EQ(j["methods"]["envmap"]["mixed"]["pixels"], 50);
+  const std::string html = reportHtml(r);
+  // envmap is best on the left reflector, none on the right one.
+  EXPECT_NE(html.find("<tr><td>left</td><td>1000</td><td class=best>25.00</td><td>15.00</td>"),
+            std::string::npos)
+      << html;
+  EXPECT_NE(html.find("<tr><td>right</td><td>234</td><td>11.00</td><td class=best>14.00</td>"),
+            std::string::npos);
+  EXPECT_NE(html.find("src=\"causes.png\""), std::string::npos);
+  EXPECT_NE(html.find("75.0%"), std::string::npos);            // diffuse: 3 of the 4 units of sse
+  EXPECT_NE(html.find("<b>37.25 dB</b>"), std::string::npos);  // the noise floor
+}
+
 }  // namespace
 }  // namespace mirage
