@@ -16,6 +16,7 @@
 #include "core/supersample.h"
 #include "core/timer.h"
 #include "eval/metrics.h"
+#include "gpu/framebuffer.h"
 #include "viewer/viewer_panel.h"
 
 namespace mirage {
@@ -190,6 +191,11 @@ void ViewerApp::applyRequests() {
 bool ViewerApp::ensureStage(ivec2 size) {
   const ivec2 frame_size = supersampledSize(size, state_.settings.pixel_scale);
   if (!renderer_ || renderer_->size() != frame_size) {
+    if (const int largest = gpu::maxFrameSide(); std::max(frame_size.x, frame_size.y) > largest)
+      throwInput(
+          "--ssaa {}: a {}x{} window needs a {}x{} frame, beyond this driver's largest frame "
+          "side {} (use a smaller --ssaa or window)",
+          state_.settings.pixel_scale, size.x, size.y, frame_size.x, frame_size.y, largest);
     method_.reset();
     renderer_ = std::make_unique<FrameRenderer>(scene_, frame_size);
     if (!truth_) {

@@ -109,6 +109,22 @@ TEST(ViewUnderXvfb, ScreenshotMatchesTheHeadlessRender) {
 // is recorded along the way. The shot equals the headless render of its camera file; the
 // recorded path ends at that camera, and played back in the viewer it reaches the frame that
 // `mirage render --camera-path` draws at the same path time.
+// A supersampled frame beyond the driver's largest frame side is refused with exit 2, naming
+// --ssaa and the sizes, before anything is drawn or written.
+TEST(ViewUnderXvfb, SupersamplingBeyondTheDriverIsAnInputError) {
+  MIRAGE_NEED_DISPLAY();
+  const auto dir = testTempDir("view-ssaa");
+  const CliResult r = runMirage(
+      "view --scene sphere-over-checker --size 4200x2400 --ssaa 8 --frames 2 --screenshot " +
+      (dir / "shot.png").string());
+  EXPECT_EQ(r.code, 2) << r.output;
+  // 33600 pixels: beyond every driver (GL caps frame sides at 32768 at most in practice).
+  EXPECT_NE(r.output.find("--ssaa 8: a 4200x2400 window needs a 33600x19200 frame"),
+            std::string::npos)
+      << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "shot.png"));
+}
+
 TEST(ViewUnderXvfb, ReplayedEventsRecordAPathThatPlaysBackAlike) {
   MIRAGE_NEED_DISPLAY();
   const auto dir = testTempDir("view-events");
