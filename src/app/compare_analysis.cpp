@@ -1,7 +1,6 @@
 #include "app/compare_analysis.h"
 
 #include <map>
-#include <set>
 
 #include <spdlog/spdlog.h>
 
@@ -49,9 +48,11 @@ void addCauses(const CompareRun& run, const Image& shown, const ReferenceFrame& 
         const std::string& name = scene.instances[label - 1].name;
         return name.empty() ? fmt::format("instance {}", label - 1) : name;
       });
-  auto m = regionMetrics(shown, reference.display, ssim, flip, mixed);
-  regions.mixed = m.count(1) ? m[1] : RegionMetrics{};
-  if (!m.count(1)) finishRegion(regions.mixed, 0.0, 0.0);
+  const auto m = regionMetrics(shown, reference.display, ssim, flip, mixed);
+  if (auto it = m.find(1); it != m.end())
+    regions.mixed = it->second;
+  else
+    finishRegion(regions.mixed, 0.0, 0.0);  // no mixed pixel: figures NaN, as for any empty region
 }
 
 }  // namespace

@@ -16,7 +16,6 @@ enum class FirstHit : uint32_t {
   kReflector = 4,    // it hit another reflector, whose own reflection the order still allows
   kBeyondOrder = 5,  // it hit a reflector after the last allowed bounce: that shows its base colour
 };
-inline constexpr int kFirstHitKinds = 6;
 
 // instance < 0: none (environment, or order 0 where no reflected ray is traced).
 inline uint32_t encodeFirstHit(FirstHit kind, int instance) {

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <vector>
 
 namespace mirage {
 
@@ -14,28 +13,32 @@ void checkFactor(ivec2 size, int n, const char* what) {
                  what, size.x, size.y, n, kMaxSsaa);
 }
 
-// The most frequent of the block's ids and how many sub-pixels hold it; ties to the smaller id.
-std::pair<uint32_t, int> blockMajority(const IdImage& ids, int n, int x, int y) {
+// The most frequent id of the n x n block of output pixel (x, y).
+uint32_t blockMajority(const IdImage& ids, int n, int x, int y) {
   std::array<uint32_t, kMaxSsaa * kMaxSsaa> block{};
-  int count = 0;
+  size_t count = 0;
   for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) block[size_t(count++)] = ids(x * n + i, y * n + j);
-  std::sort(block.begin(), block.begin() + count);
-  uint32_t best = block[0];
-  int best_run = 0;
-  for (int start = 0; start < count;) {
-    int end = start;
-    while (end < count && block[size_t(end)] == block[size_t(start)]) ++end;
-    if (end - start > best_run) {  // strictly more: the first (smallest) id wins a tie
-      best = block[size_t(start)];
+    for (int i = 0; i < n; ++i) block[count++] = ids(x * n + i, y * n + j);
+  return mostFrequent(std::span(block.data(), count));
+}
+
+}  // namespace
+
+uint32_t mostFrequent(std::span<uint32_t> values) {
+  std::sort(values.begin(), values.end());
+  uint32_t best = values.front();
+  size_t best_run = 0;
+  for (size_t start = 0; start < values.size();) {
+    size_t end = start;
+    while (end < values.size() && values[end] == values[start]) ++end;
+    if (end - start > best_run) {  // strictly more: the first (smallest) value wins a tie
+      best = values[start];
       best_run = end - start;
     }
     start = end;
   }
-  return {best, best_run};
+  return best;
 }
-
-}  // namespace
 
 Image boxDownsample(const Image& image, int n) {
   checkFactor(image.size(), n, "boxDownsample");
@@ -60,12 +63,8 @@ IdImage majorityDownsample(const IdImage& ids, int n) {
   if (n == 1) return ids;
   IdImage out(ids.width() / n, ids.height() / n);
   for (int y = 0; y < out.height(); ++y)
-    for (int x = 0; x < out.width(); ++x) out(x, y) = blockMajority(ids, n, x, y).first;
+    for (int x = 0; x < out.width(); ++x) out(x, y) = blockMajority(ids, n, x, y);
   return out;
-}
-
-int blockDisagreement(const IdImage& ids, int n, int x, int y) {
-  return n * n - blockMajority(ids, n, x, y).second;
 }
 
 }  // namespace mirage

@@ -4,6 +4,9 @@
 // centres of the large frame's pixels: a regular grid) and what remains is the technique's error.
 #pragma once
 
+#include <cstdint>
+#include <span>
+
 #include "core/image.h"
 
 namespace mirage {
@@ -26,8 +29,8 @@ Image boxDownsample(const Image& image, int n);
 // is). `n` = 1 returns the image unchanged.
 IdImage majorityDownsample(const IdImage& ids, int n);
 
-// The number of sub-pixels of the block of output pixel (x, y) whose id differs from the most
-// frequent one: 0 where the whole block agrees.
-int blockDisagreement(const IdImage& ids, int n, int x, int y);
+// The most frequent of `values` (non-empty), ties to the smaller value; sorts them in place. The
+// one rule for reflector ids here and for first-hit codes in eval/causes.
+uint32_t mostFrequent(std::span<uint32_t> values);
 
 }  // namespace mirage

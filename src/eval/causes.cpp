@@ -1,9 +1,9 @@
 #include "eval/causes.h"
 
-#include <algorithm>
 #include <vector>
 
 #include "core/error.h"
+#include "core/supersample.h"
 
 namespace mirage {
 
@@ -49,15 +49,7 @@ PixelCauses classifyCauses(const IdImage& first_hits, int n, const IdImage& mask
         out.label(x, y) = kUnclassified;
         continue;
       }
-      std::sort(block.begin(), block.end());
-      uint32_t best = block.front();
-      size_t best_run = 0;
-      for (size_t start = 0; start < block.size();) {
-        size_t end = start;
-        while (end < block.size() && block[end] == block[start]) ++end;
-        if (end - start > best_run) best = block[start], best_run = end - start;
-        start = end;
-      }
+      const uint32_t best = mostFrequent(block);
       out.code(x, y) = best;
       out.label(x, y) = uint32_t(firstHitKind(best));
     }

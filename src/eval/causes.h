@@ -6,7 +6,6 @@
 // also counted as `mixed`.
 #pragma once
 
-#include <array>
 #include <string>
 
 #include "core/first_hit.h"
@@ -18,8 +17,7 @@ namespace mirage {
 // for a reflector pixel of the reference (a method other than the ray tracer) where no sub-pixel
 // of the ray tracer hit a reflector.
 inline constexpr uint32_t kUnclassified = 6;
-inline constexpr int kCauseCount = 6;
-// The name of cause label 1..kCauseCount, as metrics.json spells it.
+// The name of cause label 1..kUnclassified, as metrics.json spells it.
 const char* causeName(uint32_t label);
 // The colour the cause image draws a label with (linear [0, 1] display colour).
 vec3 causeColour(uint32_t label);

@@ -1,5 +1,7 @@
 #include "core/supersample.h"
 
+#include <vector>
+
 #include <gtest/gtest.h>
 
 namespace mirage {
@@ -51,8 +53,15 @@ TEST(Supersample, IdsTakeTheMajorityWithTiesToTheSmallerId) {
   EXPECT_EQ(out(1, 0), 0u);  // half on the reflector is not a reflector pixel
   EXPECT_EQ(out(0, 1), 4u);
   EXPECT_EQ(out(1, 1), 0u);
-  EXPECT_EQ(blockDisagreement(ids, 2, 0, 0), 1);
-  EXPECT_EQ(blockDisagreement(ids, 2, 1, 1), 0);
+}
+
+TEST(Supersample, MostFrequentTakesTheLongestRunWithTiesToTheSmallerValue) {
+  std::vector<uint32_t> values = {9, 4, 9, 7, 4, 9};
+  EXPECT_EQ(mostFrequent(values), 9u);
+  values = {8, 3, 8, 3, 5};
+  EXPECT_EQ(mostFrequent(values), 3u);
+  values = {42};
+  EXPECT_EQ(mostFrequent(values), 42u);
 }
 
 TEST(Supersample, RefusesAFactorThatDoesNotDivideTheImage) {

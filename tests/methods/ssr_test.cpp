@@ -78,35 +78,20 @@ Scene mirrorFloorBeforeWall() {
   return s;
 }
 
-struct SsrFrame {
-  RenderPair pair;
-  std::map<std::string, double> stats;
-};
-
 // The method and the ray tracer under matched 2x2 sampling (render_pair.h's kMatchedSsaa); the
 // stats count sub-pixels.
-SsrFrame renderSsr(const Scene& scene, ivec2 size, const std::map<std::string, std::string>& params,
-                   const std::string& method = "ssr") {
+RenderPair renderSsr(const Scene& scene, ivec2 size,
+                     const std::map<std::string, std::string>& params,
+                     const std::string& method = "ssr") {
   FrameSettings settings;
   settings.order = 1;
-  settings.pixel_scale = kMatchedSsaa;
-  const ivec2 frame_size = size * kMatchedSsaa;
-  FrameRenderer renderer(scene, frame_size);
-  const View view(scene.camera(), frame_size);
-  auto m = renderer.createMethod(method, params, settings);
-  renderer.render(*m, view, 0.0f, settings);
-  const RenderedFrame frame = downsample(renderer.read(), kMatchedSsaa);
-  RayTracer tracer(scene, renderer.environment());
-  tracer.prepare(0.0f);
-  TraceResult t = tracer.render(view, {settings.order, 1});
-  const RenderedFrame truth = downsample({std::move(t.color), std::move(t.ids)}, kMatchedSsaa);
-  return {{displayed(frame.color), displayed(truth.color), frame.ids, truth.ids}, m->stats()};
+  return renderWithTruth(scene, method, size, settings, params, 0.0f, kMatchedSsaa);
 }
 
 TEST_F(SsrGpu, MatchesTheRayTracerWhereEveryReflectedPointIsOnScreen) {
   const Scene scene = mirrorFloorBeforeWall();
-  const SsrFrame f = renderSsr(scene, {320, 240}, {{"ssr-edge-fade", "0"}});
-  const double psnr = reflectorPsnr(f.pair);
+  const RenderPair f = renderSsr(scene, {320, 240}, {{"ssr-edge-fade", "0"}});
+  const double psnr = reflectorPsnr(f);
   std::printf("on-screen: reflector PSNR %.2f dB, fallback %.4f, hits %.4f, pixels %.0f\n", psnr,
               f.stats.at("ssr_fallback_fraction"), f.stats.at("ssr_hit_fraction"),
               f.stats.at("ssr_reflector_pixels"));
@@ -117,17 +102,16 @@ TEST_F(SsrGpu, MatchesTheRayTracerWhereEveryReflectedPointIsOnScreen) {
   // by more than 0.02 at one sample a pixel): the error is on the checker's edges, which the
   // hit's colour, read between the direct view's pixels, blurs; everywhere else the reflection is
   // the ray tracer's.
-  EXPECT_TRUE(psnrAtLeast(f.pair.gpu, f.pair.cpu, 32.0, &f.pair.cpu_ids, "ssr-on-screen"));
-  EXPECT_TRUE(mostPixelsWithin(f.pair.gpu, f.pair.cpu, 0.02f, 0.07, &f.pair.cpu_ids,
-                               "ssr-on-screen-pixels"));
+  EXPECT_TRUE(psnrAtLeast(f.gpu, f.cpu, 32.0, &f.cpu_ids, "ssr-on-screen"));
+  EXPECT_TRUE(mostPixelsWithin(f.gpu, f.cpu, 0.02f, 0.07, &f.cpu_ids, "ssr-on-screen-pixels"));
 }
 
 TEST_F(SsrGpu, HandsWhatIsOffScreenToTheFallback) {
   // The mirror in mirror-room shows mostly what is behind the camera.
   const Scene scene = makeBuiltinScene("mirror-room");
-  const SsrFrame ssr = renderSsr(scene, {320, 240}, {{"ssr-fallback", "envmap-box"}});
-  const SsrFrame box = renderSsr(scene, {320, 240}, {}, "envmap-box");
-  const double psnr_ssr = reflectorPsnr(ssr.pair), psnr_box = reflectorPsnr(box.pair);
+  const RenderPair ssr = renderSsr(scene, {320, 240}, {{"ssr-fallback", "envmap-box"}});
+  const RenderPair box = renderSsr(scene, {320, 240}, {}, "envmap-box");
+  const double psnr_ssr = reflectorPsnr(ssr), psnr_box = reflectorPsnr(box);
   std::printf(
       "mirror-room: fallback %.3f (off screen %.3f, back faces %.3f), reflector PSNR "
       "ssr %.2f dB, envmap-box alone %.2f dB\n",

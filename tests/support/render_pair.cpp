@@ -21,7 +21,7 @@ RenderPair renderWithTruth(const Scene& scene, const std::string& method, ivec2 
   tracer.prepare(time);
   TraceResult t = tracer.render(view, {settings.order, 1});
   RenderedFrame truth = downsample({std::move(t.color), std::move(t.ids)}, ssaa);
-  return {displayed(frame.color), displayed(truth.color), frame.ids, truth.ids};
+  return {displayed(frame.color), displayed(truth.color), frame.ids, truth.ids, m->stats()};
 }
 
 double reflectorPsnr(const RenderPair& p) {

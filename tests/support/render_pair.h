@@ -15,6 +15,7 @@ namespace mirage::test {
 struct RenderPair {
   Image gpu, cpu;
   IdImage gpu_ids, cpu_ids;
+  std::map<std::string, double> stats;  // the method's, after its frame
 };
 
 RenderPair renderWithTruth(const Scene& scene, const std::string& method, ivec2 size,

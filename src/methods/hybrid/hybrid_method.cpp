@@ -289,7 +289,6 @@ class HybridMethod final : public Method {
     splat_program_.set("u_item_count", int(itemCount()));
     splat_program_.set("u_first_only", first_only_ ? 1 : 0);
     splat_program_.set("u_splat_size", splat_size_);
-    splat_program_.set("u_max_splat", MIRAGE_HYBRID_MAX_SPLAT * pixel_scale_);
     splat_program_.set("u_pixel_scale", pixel_scale_);
     splat_program_.set("u_index_bits", index_bits_);
     splat_program_.set("u_depth_scale", float(double((1ull << depth_bits) - 1) / double(reach)));

@@ -23,7 +23,6 @@ layout(binding = MIRAGE_UNIT_HYBRID_DEPTH) uniform sampler2D u_depth;
 uniform int u_item_count;
 uniform int u_first_only;    // 1: the first projection only
 uniform int u_splat_size;    // s: an s×s square; 0: from the magnification
-uniform int u_max_splat;     // the largest magnification-sized side (scaled with --ssaa)
 uniform int u_pixel_scale;   // frame pixels per output pixel along a side (--ssaa)
 uniform int u_index_bits;
 uniform float u_depth_scale;
@@ -48,7 +47,7 @@ int splat_side(C3rcData c, vec4 proj, vec3 base, float spacing, float eye_depth)
   float on_screen = spacing / sqrt(max(spread, 1.0e-12f));
   float pixels = on_screen * frame.viewport.y / (2.0f * frame.viewport.z * max(eye_depth, 1.0e-6f));
   return clamp(int(ceil(pixels / float(u_pixel_scale))) * u_pixel_scale, u_pixel_scale,
-               u_max_splat);
+               MIRAGE_HYBRID_MAX_SPLAT * u_pixel_scale);
 }
 
 uint splat(C3rcData c, vec4 proj, vec3 q, float spacing, uint index) {

@@ -55,7 +55,6 @@ class SsrMethod final : public Method {
   explicit SsrMethod(const MethodSetup& setup)
       : info_(setup.info),
         fallback_name_(setup.params.text("ssr-fallback")),
-        // Cells along a ray grow with the frame's side: --ssaa N gives N times as many steps.
         // --ssaa N adds log2 N levels to the pyramid, and a ray about two cells per level (one
         // down, one across): steps + 2 log2 N keeps the share of rays that run out of steps at
         // native resolution's (docs/reports.md has the sweep).

@@ -30,10 +30,11 @@ vec3 landing(const ZexelMap2D& map, const mat3& po_inverse, const WarpCamera& in
 
 // The splat side of a zexel: fixed, or (0) from the warp's magnification.
 int splatSide(int splat, const mat3& po_inverse, const WarpCamera& in, const WarpCamera& out,
-              float delta, int x, int y, vec2 landed, int largest = kMaxAutoSplat, int unit = 1) {
+              float delta, int x, int y, vec2 landed, int unit = 1) {
   if (splat > 0) return splat;
   return shading::zexel_splat_side(po_inverse, in.p, in.c, out.c, delta,
-                                   vec2(float(x) + 0.5f, float(y) + 0.5f), landed, largest, unit);
+                                   vec2(float(x) + 0.5f, float(y) + 0.5f), landed,
+                                   kMaxAutoSplat * unit, unit);
 }
 
 // The s x s block of pixels whose centres are nearest (u, v), clipped to `rect` (within an image
@@ -144,8 +145,8 @@ std::vector<uint32_t> warpOcclusionCompatible(const ZexelMap2D& map, const WarpC
         const vec3 o = landing(map, po_inverse, in, out, x, y, &delta);
         if (!(o.z > 0.0f)) continue;
         const uint32_t index = uint32_t(y) * uint32_t(map.width) + uint32_t(x);
-        const int side = splatSide(options.splat, po_inverse, in, out, delta, x, y, vec2(o),
-                                   options.largest, options.unit);
+        const int side =
+            splatSide(options.splat, po_inverse, in, out, delta, x, y, vec2(o), options.unit);
         splatAt(vec2(o), side, clip, size.x,
                 [&](size_t pixel) { shown[pixel].store(index, std::memory_order_relaxed); });
       }

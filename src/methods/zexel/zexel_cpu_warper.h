@@ -39,8 +39,9 @@ struct WarpOptions {
   bool parallel = true;  // the sheets on parallel threads
   ivec4 rect{0, 0, 1 << 30, 1 << 30};  // only pixels in [xy, zw) are written (a mirror's)
   int wedges = 8;  // each sheet split into this many wedges about the epipole (parallel tasks)
-  int largest = kMaxAutoSplat;  // the largest magnification-sized splat (scaled with --ssaa)
-  int unit = 1;                 // automatic splats in whole output pixels of this many (--ssaa)
+  // Automatic splats in whole output pixels of this many frame pixels, at most kMaxAutoSplat of
+  // them (--ssaa).
+  int unit = 1;
 };
 
 // Per output pixel (rows from the bottom) the index of the zexel shown there, or kNoZexel.

@@ -144,7 +144,6 @@ class ZexelMethod final : public Method {
                      0,
                      splat_,
                      screenRect(frame.view, frame.gpu.instanceBounds(m.maps.mirror())),
-                     MIRAGE_ZEXEL_MAX_SPLAT * pixel_scale_,
                      pixel_scale_};
     // Zexels at most a pixel apart for 1x1 splats, two for larger or magnification-sized ones:
     // the splats still close the surface.

@@ -29,7 +29,6 @@ uniform vec3 u_co;          // the output's: the mirrored eye
 uniform ivec2 u_size;       // the output image, pixels
 uniform ivec4 u_rect;       // the mirror's pixels lie in [xy, zw): nothing lands usefully outside
 uniform int u_splat;        // splat side in pixels; 0: from the warp's magnification
-uniform int u_max_splat;    // the largest magnification-sized side (scaled with --ssaa)
 uniform int u_pixel_scale;  // frame pixels per output pixel along a side (--ssaa)
 
 void main() {
@@ -47,7 +46,8 @@ void main() {
   uint key = floatBitsToUint(distance);
   int side = u_splat > 0 ? u_splat
                          : zexel_splat_side(po_inverse, pi, u_ci, u_co, delta, xi, o.xy,
-                                            u_max_splat, u_pixel_scale);
+                                            MIRAGE_ZEXEL_MAX_SPLAT * u_pixel_scale,
+                                            u_pixel_scale);
   // The side x side block of pixels whose centres are nearest the landing point.
   ivec2 first = ivec2(floor(o.xy - 0.5f * float(side - 1)));
   if (any(greaterThanEqual(first, u_rect.zw)) || any(lessThan(first + side, u_rect.xy))) return;

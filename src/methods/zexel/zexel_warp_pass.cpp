@@ -51,7 +51,6 @@ void warpOnGpu(const gpu::Program& program, const ZexelWarpJob& job, const View&
   program.set("u_co", output.eye());
   program.set("u_size", output.size());
   program.set("u_splat", job.splat);
-  program.set("u_max_splat", job.max_splat);
   program.set("u_pixel_scale", job.pixel_scale);
   program.set("u_rect", job.rect);
   program.use();
@@ -82,9 +81,11 @@ long warpOnCpu(const ZexelWarpJob& job, const View& output, int threads, ZexelWa
     const WarpCamera in = job.maps->warpCamera(job.chosen[slot], job.level);
     std::vector<uint32_t> shown;
     arena.execute([&] {
-      shown = warpOcclusionCompatible(
-          map, in, out, size,
-          {job.splat, threads != 1, job.rect, 8, job.max_splat, job.pixel_scale});
+      shown = warpOcclusionCompatible(map, in, out, size,
+                                      {.splat = job.splat,
+                                       .parallel = threads != 1,
+                                       .rect = job.rect,
+                                       .unit = job.pixel_scale});
     });
     warped += long(map.width) * map.height;
     // The second map fills what the first left and wins where it saw something nearer.

@@ -16,10 +16,9 @@ struct ZexelWarpJob {
   const ZexelMirrorMaps* maps = nullptr;
   std::vector<int> chosen;
   int level = 0;
-  int splat = 3;                  // 0: from the warp's magnification
-  ivec4 rect{0};                  // the mirror's pixels (window coordinates) lie in [xy, zw)
-  int max_splat = kMaxAutoSplat;  // the largest magnification-sized splat (--ssaa)
-  int pixel_scale = 1;            // frame pixels per output pixel along a side (--ssaa)
+  int splat = 3;        // 0: from the warp's magnification
+  ivec4 rect{0};        // the mirror's pixels (window coordinates) lie in [xy, zw)
+  int pixel_scale = 1;  // frame pixels per output pixel along a side (--ssaa)
 };
 
 // A mirror's per-pixel words, frame-sized, and its last image (the no-clear option).
