@@ -2,6 +2,7 @@
 
 #include <cstddef>
 
+#include "gpu/feedback_check.h"
 #include "shading/gpu_types.h"
 
 namespace mirage {
@@ -171,6 +172,7 @@ void GpuScene::draw(int instance) const {
   glUniform1i(0, instance);  // layout(location = 0) uniform int u_instance
   const GpuMesh& mesh = meshes_[size_t(inst.mesh)];
   glBindVertexArray(mesh.vao.id());
+  gpu::checkFeedback();
   glDrawElements(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr);
 }
 

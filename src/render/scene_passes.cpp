@@ -1,5 +1,7 @@
 #include "render/scene_passes.h"
 
+#include "gpu/feedback_check.h"
+
 namespace mirage {
 
 shading::FrameData makeFrameData(const View& view, const Scene& scene, float time,
@@ -44,6 +46,7 @@ void ScenePasses::drawBackground() const {
   glDepthMask(GL_FALSE);
   glDisable(GL_DEPTH_TEST);
   glBindVertexArray(empty_vao_.id());
+  gpu::checkFeedback();
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glEnable(GL_DEPTH_TEST);
   glDepthMask(GL_TRUE);

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "eval/metrics.h"
+#include "gpu/feedback_check.h"
 
 namespace mirage {
 
@@ -60,6 +61,7 @@ void ViewerOutput::draw(const gpu::Texture& frame, ivec2 size, const OutputSetti
   }
   program.use();
   glBindVertexArray(vao_.id());
+  gpu::checkFeedback();
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 

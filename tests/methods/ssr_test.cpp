@@ -40,7 +40,9 @@ TEST_F(SsrGpu, EachPyramidLevelIsTheMinimumOfTheFourBelow) {
   HiZPyramid pyramid;
   pyramid.build(texture, screen);
   ASSERT_EQ(HiZPyramid::paddedSize(screen), ivec2(128, 64));
-  ASSERT_EQ(pyramid.levels(), 8);  // 128 -> 1, level 0 being the depth buffer itself
+  ASSERT_EQ(pyramid.levels(), 8);  // 128 -> 1, level 0 being the depth buffer's copy
+  // Level 0 is the depth buffer, texel for texel (the march reads it, not the attached depth).
+  ASSERT_EQ(readLevel(pyramid.levelZero(), 0, screen), depth);
 
   // Level 0 as the march reads it: the depth buffer (rows as GL stores them, bottom first), 1
   // past its edges.

@@ -1,7 +1,8 @@
-// Method `ssr`: one level of the hierarchical-Z pyramid, the minimum — the nearest depth — of
-// the up to four cells below it. Level 0 is the depth buffer itself (read as a texture, 1,
-// "nothing", past the screen's edge: the pyramid is a power of two a side); the texture holds
-// levels 1 and up, its level i - 1 being the pyramid's level i.
+// Method `ssr`: one level of the hierarchical-Z pyramid. Level 0 (u_copy) is the depth buffer
+// copied texel for texel into an r32f image, which the march may read while the depth buffer is
+// attached for the depth test; every level above is the minimum — the nearest depth — of the up
+// to four cells below it (1, "nothing", past the screen's edge: the pyramid is a power of two a
+// side). The pyramid's texture holds levels 1 and up, its level i - 1 being the pyramid's level i.
 #include "render/shaders/common.glsl"
 #include "methods/ssr/ssr_shared.h"
 
@@ -13,16 +14,20 @@ layout(binding = MIRAGE_IMAGE_SSR_LEVEL_OUT, r32f) uniform writeonly image2D u_o
 
 uniform ivec2 u_out_size;  // the level written
 uniform ivec2 u_in_size;   // the level below (level 0: the screen's size)
-uniform int u_first;       // 1: the level below is the depth buffer
+uniform int u_copy;        // 1: write level 0, the depth buffer's copy
 
 float below(ivec2 at) {
   if (at.x >= u_in_size.x || at.y >= u_in_size.y) return 1.0f;
-  return u_first != 0 ? texelFetch(u_depth, at, 0).r : imageLoad(u_in, at).r;
+  return imageLoad(u_in, at).r;
 }
 
 void main() {
   ivec2 at = ivec2(gl_GlobalInvocationID.xy);
   if (at.x >= u_out_size.x || at.y >= u_out_size.y) return;
+  if (u_copy != 0) {
+    imageStore(u_out, at, vec4(texelFetch(u_depth, at, 0).r));
+    return;
+  }
   float nearest = below(2 * at);
   nearest = min(nearest, below(2 * at + ivec2(1, 0)));
   nearest = min(nearest, below(2 * at + ivec2(0, 1)));

@@ -2,8 +2,10 @@
 // reflected ray's march can skip a whole 2^l x 2^l cell whose nearest depth it stays in front
 // of (ssr_march_shared.h). The pyramid is a power of two a side (pixels past the screen count
 // as 1, "nothing"), so that a cell of level l covers pixels [2^l c, 2^l (c + 1)) on every level.
-// Level 0 is the depth buffer itself; texture() holds levels 1 and up (its mip level i - 1 is
-// the pyramid's level i), which saves a copy of the largest level.
+// Level 0 is a copy of the depth buffer (levelZero(), the screen's size): the march reads it
+// while the frame's depth is attached to the draw framebuffer for the depth test, and sampling
+// an attachment is a feedback loop, undefined in OpenGL 4.5 (§9.3.1) even with depth writes off.
+// texture() holds levels 1 and up (its mip level i - 1 is the pyramid's level i).
 #pragma once
 
 #include "gpu/program.h"
@@ -15,11 +17,13 @@ class HiZPyramid {
  public:
   HiZPyramid();
 
-  // Builds levels 1 and up from `depth` (a depth texture of `screen` pixels) on the GPU.
+  // Copies `depth` (a depth texture of `screen` pixels) into level 0 and builds levels 1 and up
+  // from it, on the GPU.
   void build(const gpu::Texture& depth, ivec2 screen);
 
+  const gpu::Texture& levelZero() const { return level_zero_; }
   const gpu::Texture& texture() const { return texture_; }
-  // Levels of the pyramid, level 0 (the depth buffer) included.
+  // Levels of the pyramid, level 0 (the depth copy) included.
   int levels() const { return texture_.levels() + 1; }
   ivec2 screen() const { return screen_; }
   // The pyramid's side lengths at level 0: `screen` rounded up to powers of two.
@@ -29,6 +33,7 @@ class HiZPyramid {
 
  private:
   gpu::Program program_;
+  gpu::Texture level_zero_;  // r32f, the screen's size
   gpu::Texture texture_;
   ivec2 screen_{0};
 };

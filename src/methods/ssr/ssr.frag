@@ -28,7 +28,7 @@ uniform vec3 u_forward;  // the view direction (world)
 
 layout(binding = MIRAGE_UNIT_SSR_DEPTH) uniform sampler2D u_depth;
 
-// Level 0 is the depth buffer (1 past its edges), levels 1 and up the pyramid's texture.
+// Level 0 is the depth buffer's copy (1 past its edges), levels 1 and up the pyramid's texture.
 float ssr_hiz(int level, int x, int y) {
   if (level > 0) return texelFetch(u_hiz, ivec2(x, y), level - 1).r;
   if (x < 0 || y < 0 || x >= u_size.x || y >= u_size.y) return 1.0f;

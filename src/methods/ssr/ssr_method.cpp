@@ -101,7 +101,7 @@ class SsrMethod final : public Method {
     frame.target.bind();
     frame.passes.begin(frame.view, frame.settings);
     hiz_.texture().bind(MIRAGE_UNIT_SSR_HIZ);
-    depth.bind(MIRAGE_UNIT_SSR_DEPTH);
+    hiz_.levelZero().bind(MIRAGE_UNIT_SSR_DEPTH);  // not `depth`: it is attached (hiz_pyramid.h)
     gbuffer_->color.bind(MIRAGE_UNIT_SSR_COLOR);
     gbuffer_->normal.bind(MIRAGE_UNIT_SSR_NORMAL);
     counts_.upload(std::span<const GLuint>(zeros_));
