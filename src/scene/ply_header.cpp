@@ -1,7 +1,10 @@
 #include "scene/ply_header.h"
 
+#include <algorithm>
 #include <charconv>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "core/error.h"
 
@@ -38,6 +41,45 @@ std::vector<std::string_view> tokens(std::string_view line) {
     i = j;
   }
   return out;
+}
+
+constexpr std::string_view kKeywords[] = {"format",     "element", "property",
+                                          "end_header", "comment", "obj_info"};
+
+// Levenshtein distance, stopping early past `limit` (the words compared are short).
+int editDistance(std::string_view a, std::string_view b, int limit) {
+  if (int(a.size()) - int(b.size()) > limit || int(b.size()) - int(a.size()) > limit)
+    return limit + 1;
+  std::vector<int> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = int(j);
+  for (size_t i = 1; i <= a.size(); ++i) {
+    int diagonal = row[0];
+    row[0] = int(i);
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const int up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// The keyword `word` looks like a misspelling of, or nullopt.
+std::optional<std::string_view> nearKeyword(std::string_view word) {
+  for (std::string_view k : kKeywords)
+    if (editDistance(word, k, 2) <= 2) return k;
+  return std::nullopt;
+}
+
+bool looksNumeric(std::string_view word) {
+  const char c = word.empty() ? ' ' : word[0];
+  return (c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.';
+}
+
+bool isText(std::string_view line) {
+  for (unsigned char c : line)
+    if ((c < 0x20 && c != '\t') || c == 0x7f) return false;
+  return true;
 }
 
 }  // namespace
@@ -87,13 +129,17 @@ Header parseHeader(const std::string& name, std::string_view bytes) {
   Header h;
   bool have_format = false;
   int line_no = 0;
+  int first_free_text = 0;  // the first line read as free text, for the missing end_header
   size_t pos = 0;
   auto fail = [&](std::string_view msg) { throwInput("{}: line {}: {}", name, line_no, msg); };
   for (;;) {
     if (pos >= bytes.size()) {
       if (line_no == 0) throwInput("{}: empty file (expected a PLY header)", name);
-      throwInput("{}: the PLY header has no end_header line (the file ends at line {})", name,
-                 line_no);
+      throwInput("{}: the PLY header has no end_header line (the file ends at line {}{})", name,
+                 line_no,
+                 first_free_text
+                     ? fmt::format("; lines from {} on were read as free text", first_free_text)
+                     : std::string());
     }
     size_t eol = bytes.find('\n', pos);
     size_t next = eol == std::string_view::npos ? bytes.size() : eol + 1;
@@ -162,10 +208,21 @@ Header parseHeader(const std::string& name, std::string_view bytes) {
       }
       h.elements.back().properties.push_back(std::move(p));
     } else {
-      fail(
-          fmt::format("unknown header keyword '{}' (expected format, element, property, "
-                      "comment, obj_info or end_header)",
-                      key.substr(0, 40)));
+      const std::string shown(key.substr(0, 40));
+      if (const auto near = nearKeyword(key))
+        fail(
+            fmt::format("unknown header keyword '{}' (a misspelt '{}'? expected format, element, "
+                        "property, comment, obj_info or end_header)",
+                        shown, *near));
+      if (!isText(line))
+        fail("a header line holds bytes that are not text (binary data before end_header?)");
+      if (looksNumeric(key))
+        fail(
+            fmt::format("'{}' is a number, not a header keyword (data before end_header?)", shown));
+      if (!first_free_text) first_free_text = line_no;
+      h.warnings.push_back(
+          fmt::format("{}: line {}: '{}' is not a header keyword; the line is read as a comment",
+                      name, line_no, line.substr(line.find_first_not_of(" \t")).substr(0, 60)));
     }
   }
   if (!have_format) throwInput("{}: the PLY header has no 'format' line", name);

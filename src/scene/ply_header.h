@@ -42,12 +42,18 @@ struct Header {
   std::vector<Element> elements;
   size_t data_offset = 0;  // first byte after the end_header line
   int data_line = 0;       // line number of the first data line (ASCII messages)
+  // Header lines read as comments though they are not `comment` lines (free text some exporters
+  // write), one message each naming the line: the reader logs them as warnings.
+  std::vector<std::string> warnings;
 
   const Element* find(std::string_view name) const;
 };
 
 // Parses the header of `bytes`; throws InputError naming `name`, the header line and what was
-// expected.
+// expected. A line whose first word is no keyword is free text, read as a comment with a warning
+// (as rply, plyfile and Blender's reader accept it), unless it could change the structure: a word
+// one or two letters from a keyword ("elment", "end_headr": a misspelt declaration would shift
+// every byte after it), a number or bytes that are not text (data: the end_header line is missing).
 Header parseHeader(const std::string& name, std::string_view bytes);
 
 // Throws InputError unless the `size` bytes of the file can hold the element counts the header

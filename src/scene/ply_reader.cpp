@@ -275,6 +275,7 @@ Mesh readData(R& r, Position& at, const Header& h, const Plan& p, const LoadLimi
 
 Mesh parsePly(const std::string& name, std::string_view data, const LoadLimits& limits) {
   Header h = ply::parseHeader(name, data);
+  for (const std::string& warning : h.warnings) spdlog::warn("{}", warning);
   Plan p = plan(name, h, limits);
   ply::checkDataSize(name, h, data.size());
   if (p.vertices->count > UINT32_MAX)  // only reachable with the limits lifted

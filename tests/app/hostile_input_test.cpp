@@ -115,6 +115,14 @@ std::vector<Hostile> hostileInputs() {
        [] { return plyHeader("-5", "1"); },
        render + "{}",
        {"negative.ply", "line 3", "-5"}},
+      {"PLY header with a misspelt keyword (free text is a comment, this is not)",
+       "misspelt.ply",
+       [] {
+         std::string text = triangle("3 0 1 2");
+         return text.replace(text.find("element face"), 7, "elment");
+       },
+       render + "{}",
+       {"misspelt.ply", "line 7", "misspelt 'element'"}},
       {"PLY face index out of range",
        "index.ply",
        [] { return triangle("3 0 1 7"); },

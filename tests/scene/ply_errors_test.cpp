@@ -169,7 +169,23 @@ TEST(PlyErrors, BadHeaderLines) {
   expectInputError([&] { readPly("t.ply", replace(text, "end_header", "end_headr")); },
                    {"t.ply", "line 10", "unknown header keyword 'end_headr'"});
   expectInputError([&] { readPly("t.ply", replace(text, "end_header\n", "")); },
-                   {"t.ply", "line 10"});
+                   {"t.ply", "line 10", "data before end_header"});
+  // Free text is read as a comment, but not a word that looks like a misspelt keyword (a lost
+  // declaration would shift every byte after it) and not bytes that are not text.
+  expectInputError([&] { readPly("t.ply", replace(text, "element face 6", "elment face 6")); },
+                   {"t.ply", "line 8", "'elment'", "misspelt 'element'"});
+  expectInputError([&] { readPly("t.ply", replace(text, "property float x", "proprty float x")); },
+                   {"t.ply", "line 5", "misspelt 'property'"});
+  expectInputError(
+      [&] { readPly("t.ply", replace(text, "end_header\n", "written by\x01\x02 tool\n")); },
+      {"t.ply", "line 10", "not text"});
+  // A missing end_header after free text says where the free text began.
+  expectInputError(
+      [&] { readPly("t.ply", text.substr(0, text.find("end_header")) + "Exported by SomeTool\n"); },
+      {"t.ply", "no end_header line", "lines from 10 on were read as free text"});
+  expectInputError(
+      [&] { readPly("t.ply", replace(text, "end_header\n", "Exported by SomeTool\n")); },
+      {"t.ply", "line 11", "data before end_header"});
   expectInputError([&] { readPly("t.ply", text.substr(0, text.find("end_header"))); },
                    {"t.ply", "no end_header line"});
   expectInputError(

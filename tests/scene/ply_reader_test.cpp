@@ -3,6 +3,7 @@
 
 #include "scene/model_loader.h"
 #include "scene/model_loader_files.h"
+#include "scene/ply_header.h"
 #include "scene/ply_test_writer.h"
 
 namespace mirage {
@@ -157,6 +158,24 @@ TEST(PlyReader, ToleratesCrLfAndBlankLinesAndPlusSigns) {
   EXPECT_EQ(m.triangleCount(), 1u);
   EXPECT_EQ(m.positions[1], vec3(1, 0, 0));
   EXPECT_EQ(m.normals[0], vec3(0, 0, 1));
+}
+
+// Exporters write free-text header lines that are not `comment` lines; common readers accept
+// them. Each becomes a comment with a warning naming its line, in every encoding.
+TEST(PlyReader, ReadsFreeTextHeaderLinesAsCommentsWithAWarning) {
+  for (const char* format : kFormats) {
+    SCOPED_TRACE(format);
+    std::string text = test::writePly(test::cubeElements(), format);
+    const std::string format_line = std::string("format ") + format + " 1.0\n";
+    const size_t at = text.find(format_line) + format_line.size();
+    text.insert(at, "Exported by ScanStudio 4.2 (units: mm)\n\tTextureFile none\n");
+    const ply::Header h = ply::parseHeader("free.ply", text);
+    ASSERT_EQ(h.warnings.size(), 2u);
+    EXPECT_NE(h.warnings[0].find("free.ply: line 3: 'Exported by ScanStudio"), std::string::npos)
+        << h.warnings[0];
+    EXPECT_NE(h.warnings[1].find("line 4"), std::string::npos) << h.warnings[1];
+    expectCube(readPly("free.ply", text));
+  }
 }
 
 TEST(PlyReader, ReadsGzipFilesAndBytes) {
