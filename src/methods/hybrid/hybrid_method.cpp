@@ -149,6 +149,7 @@ class HybridMethod final : public Method {
     s["cull_nodes_tested"] = double(cull.nodes_tested);
     s["cull_hull_rejects"] = double(cull.hull_rejects);
     s["cull_exact_rejects"] = double(cull.exact_rejects);
+    s["cull_fold_keeps"] = double(cull.fold_keeps);
     s["cull_leaves_kept"] = double(cull.leaves_kept);
     s["splat_items"] = double(itemCount());
     s["cull_points_kept"] = double(last_.kept_points);

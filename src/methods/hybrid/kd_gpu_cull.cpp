@@ -130,6 +130,7 @@ KdGpuCullResult KdGpuCull::run(const std::vector<C3rcData>& c3rcs,
   result.cull.nodes_tested = state[MIRAGE_KD_STATE_TESTED];
   result.cull.hull_rejects = state[MIRAGE_KD_STATE_HULL_REJECTS];
   result.cull.exact_rejects = state[MIRAGE_KD_STATE_EXACT_REJECTS];
+  result.cull.fold_keeps = state[MIRAGE_KD_STATE_FOLD_KEEPS];
   result.cull.leaves_kept = state[MIRAGE_KD_STATE_ITEMS];
   return result;
 }
