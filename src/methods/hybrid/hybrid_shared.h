@@ -38,6 +38,29 @@ SHARED_FN bool hybrid_faces_away(vec3 normal, vec3 q, vec3 v0, vec3 v1, vec3 v2)
   return dot(normal, v0 - q) < 0.0f && dot(normal, v1 - q) < 0.0f && dot(normal, v2 - q) < 0.0f;
 }
 
+// The world-space spacing of a point sampled `spacing` apart in its object's space, under the
+// model's linear part `linear` (any affine map: rotation, non-uniform scale, shear). Neighbours
+// lie `spacing` apart along every direction of the surface's tangent plane (normal
+// `object_normal`, object space), which `linear` stretches by between its two singular values
+// there; the square splat must close the widest gap, so this is the larger, σ1 · spacing (a
+// uniform scale s gives s · spacing; the mean, sqrt(σ1 σ2) · spacing, would leave holes along
+// the stretched direction). σ1² is the larger eigenvalue of the 2 x 2 Gram matrix of the
+// tangent basis's images. A zero normal falls back to the Frobenius norm, which bounds every
+// stretch from above.
+SHARED_FN float hybrid_world_spacing(mat3 linear, vec3 object_normal, float spacing) {
+  float nn = dot(object_normal, object_normal);
+  if (!(nn > 0.0f))
+    return spacing *
+           sqrt(dot(linear[0], linear[0]) + dot(linear[1], linear[1]) + dot(linear[2], linear[2]));
+  vec3 n = object_normal / sqrt(nn);
+  vec3 t1 = normalize(cross(n, abs(n.x) < 0.9f ? vec3(1.0f, 0.0f, 0.0f) : vec3(0.0f, 1.0f, 0.0f)));
+  vec3 a = linear * t1, b = linear * cross(n, t1);
+  float aa = dot(a, a), bb = dot(b, b), ab = dot(a, b);
+  float half_difference = 0.5f * (aa - bb);
+  float largest = 0.5f * (aa + bb) + sqrt(half_difference * half_difference + ab * ab);
+  return spacing * sqrt(largest);
+}
+
 // The splat key of a point: its push-back quantised to the bits the index leaves free.
 // `depth_scale` = (2^(32 - index_bits) - 1) / the largest push-back of the frame.
 SHARED_FN uint hybrid_splat_key(float push_back, float depth_scale, int index_bits, uint index) {

@@ -88,14 +88,13 @@ void main() {
     // An item lies in one point cloud: one instance, its matrices and closedness loaded once.
     int instance = int(points[it.y].position.w);
     mat4 model = instances[instance].model;
+    mat3 linear = mat3(model);
     mat3 normal_matrix = mat3(instances[instance].normal_matrix);
-    float spacing_scale = length(vec3(model[0])) * grown;
     bool cull_back = u_keep_backfaces == 0 && points[it.y].albedo.w > 0.5f;
     for (int i = int(gl_LocalInvocationID.x); i < taken; i += MIRAGE_HYBRID_GROUP) {
       uint index = uint(it.y + min(int(float(i) * stride), it.z - 1));
       vec4 position = points[index].position, object_normal = points[index].normal;
       vec3 q = (model * vec4(position.xyz, 1.0f)).xyz;
-      float spacing = object_normal.w * spacing_scale;
       vec4 p0, p1, p2;
       int n = 0;
       bool hidden = cull_back && hybrid_faces_away(normal_matrix * object_normal.xyz, q,
@@ -103,6 +102,9 @@ void main() {
       if (!hidden) n = c3rc_project(c, q, 1.0e-4f, u_first_only != 0, p0, p1, p2);
       facing_away += hidden ? 1u : 0u;
       ++projected;
+      // Only for a point that projects: its spacing in world space, grown with the stride.
+      float spacing =
+          n > 0 && u_splat_size == 0 ? hybrid_world_spacing(linear, object_normal.xyz, object_normal.w) * grown : 0.0f;
       for (int k = 0; k < n; ++k) {
         written += splat(c, k == 0 ? p0 : (k == 1 ? p1 : p2), q, spacing, index);
       }
