@@ -10,6 +10,7 @@
 #include "methods/hybrid/hybrid_shared.h"
 #include "methods/hybrid/kd_gpu_cull.h"
 #include "methods/hybrid/point_store.h"
+#include "methods/hybrid/splat_visibility.h"
 #include "render/cube_capture.h"
 
 namespace mirage {
@@ -61,7 +62,6 @@ class HybridMethod final : public Method {
         lod_density_(float(setup.params.real("hybrid-lod")) / float(pixel_scale_ * pixel_scale_)),
         probe_size_(setup.params.integer("envmap-size")),
         splat_program_(gpu::Program::compute("methods/hybrid/hybrid_splat.comp")),
-        winner_program_(gpu::Program::compute("methods/hybrid/hybrid_winner.comp")),
         resolve_program_(
             gpu::Program::graphics("render/shaders/scene.vert", "methods/hybrid/hybrid.frag")),
         id_program_(
@@ -265,15 +265,8 @@ class HybridMethod final : public Method {
 
   void splat(FrameContext& frame) {
     const ivec2 size = frame.target.size();
-    const size_t pixels = size_t(size.x) * size_t(size.y);
-    if (depths_.size() != pixels * sizeof(uint32_t)) {
-      depths_ = gpu::Buffer(pixels * sizeof(uint32_t));
-      winners_ = gpu::Buffer(pixels * sizeof(uint32_t));
-    }
-    clearWords(winners_, MIRAGE_HYBRID_EMPTY);
+    visibility_.begin(size_t(size.x) * size_t(size.y));
     if (counter_buffer_.size() == 0) counter_buffer_ = gpu::Buffer(sizeof(counters_));
-    depths_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_SPLATS);
-    winners_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_WINNERS);
     store_.bind(MIRAGE_BIND_HYBRID_POINTS, MIRAGE_BIND_HYBRID_POINT_ATTRIBUTES);
     splat_ms_ = 0.0;
     std::fill(std::begin(counters_), std::end(counters_), 0u);
@@ -297,57 +290,22 @@ class HybridMethod final : public Method {
     const bool timing = frame.timer != nullptr;
     if (timing) glFinish();
     Stopwatch watch;
-    // A frame with more candidates than the buffer holds grows it and splats again (the same
-    // candidates come back: nothing is dropped).
-    for (;;) {
-      if (candidates_.size() == 0) candidates_ = gpu::Buffer(3 * sizeof(uint32_t) * pixels);
-      clearWords(depths_, MIRAGE_HYBRID_EMPTY);
-      clearWords(counter_buffer_, 0u);
-      candidates_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_CANDIDATES);
-      const size_t capacity = candidates_.size() / (3 * sizeof(uint32_t));
-      splat_program_.set("u_candidate_capacity", int(capacity));
+    size_t candidates = 0;
+    do {  // again, with a larger candidate buffer, when the candidates overflowed it
+      splat_program_.set("u_candidate_capacity", int(visibility_.prepare()));
+      SplatVisibility::clearWords(counter_buffer_, 0u);
       splat_program_.use();
       glDispatchCompute(GLuint(std::min<size_t>(itemCount(), 65535)), 1, 1);
       glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
       counter_buffer_.download(counters_, sizeof(counters_));
-      const size_t count = counters_[MIRAGE_HYBRID_COUNTER_CANDIDATES];
-      if (count <= capacity) break;
-      growCandidates(count);
-    }
-    pickWinners(counters_[MIRAGE_HYBRID_COUNTER_CANDIDATES]);
+      candidates = counters_[MIRAGE_HYBRID_COUNTER_CANDIDATES];
+    } while (!visibility_.fitted(candidates));
+    visibility_.pickWinners(candidates);
     if (timing) {
       glFinish();
       splat_ms_ = watch.ms();
     }
     checkEveryPairProjected();
-  }
-
-  static void clearWords(gpu::Buffer& buffer, uint32_t value) {
-    glClearNamedBufferData(buffer.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &value);
-  }
-
-  // Room for `count` candidates and a quarter more, within the largest storage block.
-  void growCandidates(size_t count) {
-    GLint64 largest = 0;
-    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &largest);
-    const size_t record = 3 * sizeof(uint32_t);
-    if (count * record > size_t(largest))
-      throwRuntime(
-          "hybrid: {} splat candidates need {} MiB, more than the GL driver's largest storage "
-          "block ({} MiB): lower --size, --ssaa or --points",
-          count, count * record >> 20, largest >> 20);
-    candidates_ = gpu::Buffer(std::min(count + count / 4, size_t(largest) / record) * record);
-  }
-
-  // The second pass: each pixel's nearest candidate's index (hybrid_winner.comp).
-  void pickWinners(size_t count) {
-    if (count == 0) return;
-    const size_t groups = (count + MIRAGE_HYBRID_WINNER_GROUP - 1) / MIRAGE_HYBRID_WINNER_GROUP;
-    const size_t x = std::min<size_t>(groups, 65535), y = (groups + x - 1) / x;
-    winner_program_.set("u_candidate_count", int(count));
-    winner_program_.use();
-    glDispatchCompute(GLuint(x), GLuint(y), 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
 
   // The splatting shader counts the (point, C3RC) pairs it projected; fewer than the items hold
@@ -371,13 +329,14 @@ class HybridMethod final : public Method {
   int pixel_scale_, splat_size_, min_pixels_;
   float lod_density_;
   int probe_size_;
-  gpu::Program splat_program_, winner_program_, resolve_program_, id_program_, base_program_;
+  gpu::Program splat_program_, resolve_program_, id_program_, base_program_;
+  SplatVisibility visibility_;
   std::vector<int> reflectors_, background_;
   gpu::Texture probes_, ids_;
   std::unique_ptr<CubeCapture> cube_;
   std::unique_ptr<gpu::Framebuffer> ids_fbo_;
   ivec2 ids_size_{0, 0};
-  gpu::Buffer depths_, winners_, candidates_, c3rc_buffer_, item_buffer_, counter_buffer_;
+  gpu::Buffer c3rc_buffer_, item_buffer_, counter_buffer_;
   uint32_t counters_[MIRAGE_HYBRID_COUNTERS] = {};
   C3rcFrame last_;
   std::unique_ptr<KdGpuCull> gpu_cull_;  // --hybrid-cull-on gpu
