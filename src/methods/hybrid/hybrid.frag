@@ -5,7 +5,9 @@
 #include "render/shaders/reflector.glsl"
 #include "methods/hybrid/hybrid_shared.h"
 
-layout(std430, binding = MIRAGE_BIND_HYBRID_POINTS) readonly buffer PointBlock { vec4 positions[]; };
+layout(std430, binding = MIRAGE_BIND_HYBRID_POINTS) readonly buffer PointBlock {
+  vec4 positions[];
+};
 layout(std430, binding = MIRAGE_BIND_HYBRID_POINT_ATTRIBUTES) readonly buffer AttributeBlock {
   PointAttributes attributes[];
 };

@@ -15,7 +15,9 @@ layout(local_size_x = MIRAGE_HYBRID_GROUP) in;
 
 layout(std430, binding = MIRAGE_BIND_HYBRID_C3RCS) readonly buffer C3rcBlock { C3rcData c3rcs[]; };
 layout(std430, binding = MIRAGE_BIND_HYBRID_ITEMS) readonly buffer ItemBlock { ivec4 items[]; };
-layout(std430, binding = MIRAGE_BIND_HYBRID_POINTS) readonly buffer PointBlock { vec4 positions[]; };
+layout(std430, binding = MIRAGE_BIND_HYBRID_POINTS) readonly buffer PointBlock {
+  vec4 positions[];
+};
 layout(std430, binding = MIRAGE_BIND_HYBRID_POINT_ATTRIBUTES) readonly buffer AttributeBlock {
   PointAttributes attributes[];
 };
@@ -116,8 +118,9 @@ void main() {
       facing_away += hidden ? 1u : 0u;
       ++projected;
       // Only for a point that projects: its spacing in world space, grown with the stride.
-      float spacing =
-          n > 0 && u_splat_size == 0 ? hybrid_world_spacing(linear, object_normal.xyz, object_normal.w) * grown : 0.0f;
+      float spacing = 0.0f;
+      if (n > 0 && u_splat_size == 0)
+        spacing = hybrid_world_spacing(linear, object_normal.xyz, object_normal.w) * grown;
       for (int k = 0; k < n; ++k) {
         written += splat(c, k == 0 ? p0 : (k == 1 ? p1 : p2), q, spacing, index);
       }
