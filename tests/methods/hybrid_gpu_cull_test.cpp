@@ -1,7 +1,8 @@
 // The hybrid method's GPU culling (--hybrid-cull-on gpu): the compute shader keeps exactly the
 // (C3RC, leaf) pairs of the CPU culling, with the same counters, in every culling mode, grows
-// its buffers instead of dropping items, and the frame it gives equals the CPU path's bit
-// for bit, under rigid motion too.
+// its buffers instead of dropping items, keeps the same boxes for the folds of a concave
+// reflector's view volumes, and the frame it gives equals the CPU path's bit for bit, under
+// rigid motion too.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -36,14 +37,14 @@ Scene movedObjects() {
 
 using Pair = std::tuple<int, int, int>;  // C3RC, first point, point count
 
-// The C3RCs of every 8th reflector triangle (counted visible whichever way they face).
-C3rcFrame someC3rcs(const Scene& scene, const std::vector<mat4>& matrices,
-                    const PointStore& store) {
+// The C3RCs of every `stride`-th reflector triangle (counted visible whichever way they face).
+C3rcFrame someC3rcs(const Scene& scene, const std::vector<mat4>& matrices, const PointStore& store,
+                    size_t stride = 8) {
   std::vector<int> reflectors = scene.reflectorInstances();
   std::vector<std::vector<uint32_t>> pixels;
   for (int r : reflectors) {
     pixels.emplace_back(scene.meshes[size_t(scene.instances[size_t(r)].mesh)].triangleCount(), 0u);
-    for (size_t t = 0; t < pixels.back().size(); t += 8) pixels.back()[t] = 1;
+    for (size_t t = 0; t < pixels.back().size(); t += stride) pixels.back()[t] = 1;
   }
   C3rcFrameOptions options;
   options.cull_on_cpu = false;
@@ -105,15 +106,18 @@ TEST_F(HybridGpuCull, KeepsExactlyTheCpuPairsInEveryMode) {
       got.emplace_back(item.x, item.y, item.z);
     }
     std::sort(got.begin(), got.end());
-    std::printf("culling %d: %zu C3RCs, %zu pairs, %lld nodes tested, %d dispatches\n",
-                int(culling), c3rcs.size(), cpu.size(), cpu_counters.nodes_tested,
-                result.dispatches);
+    std::printf(
+        "culling %d: %zu C3RCs, %zu pairs, %lld nodes tested, %lld kept for a fold, %d "
+        "dispatches\n",
+        int(culling), c3rcs.size(), cpu.size(), cpu_counters.nodes_tested, cpu_counters.fold_keeps,
+        result.dispatches);
     ASSERT_GT(cpu.size(), 0u);
     EXPECT_EQ(got.size(), cpu.size());
     EXPECT_TRUE(got == cpu) << "the GPU keeps the CPU's (C3RC, leaf) pairs";
     EXPECT_EQ(result.cull.nodes_tested, cpu_counters.nodes_tested);
     EXPECT_EQ(result.cull.hull_rejects, cpu_counters.hull_rejects);
     EXPECT_EQ(result.cull.exact_rejects, cpu_counters.exact_rejects);
+    EXPECT_EQ(result.cull.fold_keeps, cpu_counters.fold_keeps);
     EXPECT_EQ(result.cull.leaves_kept, cpu_counters.leaves_kept);
     // One dispatch per level, and one more whenever a buffer had to grow: none outgrows the
     // buffers that exact and hull left.
@@ -122,6 +126,34 @@ TEST_F(HybridGpuCull, KeepsExactlyTheCpuPairsInEveryMode) {
       EXPECT_GT(result.dispatches, levels) << "a buffer grew";
     }
   }
+}
+
+// The concave dish's C3RCs fold: the GPU runs the fold test (c3rc_classify_box's last case) on
+// the same C3RCs and keeps the same boxes for it.
+TEST_F(HybridGpuCull, KeepsTheCpuPairsWhereTheViewVolumeFolds) {
+  const Scene scene = makeBuiltinScene("concave-dish");
+  std::vector<mat4> matrices;
+  for (const Instance& inst : scene.instances) matrices.push_back(inst.matrixAt(0.0f));
+  PointSetOptions points;
+  points.total = 30000;
+  const PointStore store(scene, points, KdTreeOptions{});
+  const C3rcFrame frame = someC3rcs(scene, matrices, store, 1);
+  ASSERT_GT(frame.multiple_c3rcs, 50);
+  CullCounters cpu_counters;
+  const std::vector<Pair> cpu =
+      cpuPairs(frame.c3rcs, matrices, store, Culling::kExact, cpu_counters);
+  KdGpuCull gpu(store);
+  const KdGpuCullResult result = gpu.run(frame.c3rcs, matrices, Culling::kExact);
+  std::vector<Pair> got;
+  for (const ivec4& item : gpu.downloadItems(result.items))
+    got.emplace_back(item.x, item.y, item.z);
+  std::sort(got.begin(), got.end());
+  std::printf("%zu C3RCs (%lld folding): %zu pairs, %lld nodes kept for a fold\n",
+              frame.c3rcs.size(), frame.multiple_c3rcs, cpu.size(), cpu_counters.fold_keeps);
+  EXPECT_GT(cpu_counters.fold_keeps, 0) << "the fold case is exercised";
+  EXPECT_TRUE(got == cpu) << "the GPU keeps the CPU's (C3RC, leaf) pairs";
+  EXPECT_EQ(result.cull.fold_keeps, cpu_counters.fold_keeps);
+  EXPECT_EQ(result.cull.exact_rejects, cpu_counters.exact_rejects);
 }
 
 TEST_F(HybridGpuCull, FramesEqualTheCpuPathBitForBit) {

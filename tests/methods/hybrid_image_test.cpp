@@ -79,6 +79,43 @@ TEST_F(HybridImages, CullingIsConservativeTheImageDoesNotChange) {
   EXPECT_LE(exact.at("points_projected"), hull.at("points_projected"));
 }
 
+// Where the C3RCs' view volumes fold (concave reflectors: most of concave-dish's and glass's
+// C3RCs), the exact test keeps the boxes a fold surface crosses, so the three modes still
+// project the same points into the same frame, and the GPU culling (the same shared test) too.
+TEST_F(HybridImages, CullingModesGiveTheSameFrameWhereViewVolumesFold) {
+  const std::vector<std::pair<std::string, std::string>> cases = {{"concave-dish", "0"},
+                                                                  {"glass", "20000"}};
+  for (const auto& [name, points] : cases) {
+    SCOPED_TRACE(name);
+    const Scene scene = makeBuiltinScene(name);
+    const ivec2 size{360, 256};
+    FrameRenderer renderer(scene, size);
+    std::map<std::string, double> stats[4];
+    Image frames[4];
+    const char* modes[4][2] = {
+        {"exact", "cpu"}, {"hull", "cpu"}, {"none", "cpu"}, {"exact", "gpu"}};
+    for (int i = 0; i < 4; ++i)
+      frames[i] = renderWith(
+          renderer, scene, size,
+          {{"points", points}, {"hybrid-culling", modes[i][0]}, {"hybrid-cull-on", modes[i][1]}},
+          0.0f, &stats[i]);
+    std::printf(
+        "%s: %.0f of %.0f C3RCs fold, %.0f nodes kept for a fold; pairs with a "
+        "projection: exact %.0f, hull %.0f, none %.0f\n",
+        name.c_str(), stats[0].at("c3rcs_multiple"), stats[0].at("c3rcs"),
+        stats[0].at("cull_fold_keeps"), stats[0].at("points_with_projection"),
+        stats[1].at("points_with_projection"), stats[2].at("points_with_projection"));
+    EXPECT_GT(stats[0].at("c3rcs_multiple"), 0.5 * stats[0].at("c3rcs"));
+    EXPECT_GT(stats[0].at("projections"), 10000.0);
+    for (int i = 1; i < 4; ++i) {
+      SCOPED_TRACE(std::string(modes[i][0]) + " on " + modes[i][1]);
+      EXPECT_EQ(differingPixels(frames[0], frames[i]), 0u);
+      EXPECT_EQ(stats[0].at("points_with_projection"), stats[i].at("points_with_projection"));
+      EXPECT_EQ(stats[0].at("projections"), stats[i].at("projections"));
+    }
+  }
+}
+
 TEST_F(HybridImages, RigidMotionKeepsTheTreesAndStaysCorrect) {
   Scene scene = objectsOnly();
   const int teapot = instanceNamed(scene, "teapot");

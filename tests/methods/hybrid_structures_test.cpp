@@ -213,6 +213,16 @@ TEST(HybridCulling, CasesThePapersTwoConditionsMiss) {
   EXPECT_TRUE(boxMeetsViewVolume(ortho, {{0.9f, -0.5f, 1.0f}, {1.5f, 0.5f, 2.0f}}));
   EXPECT_TRUE(boxMeetsViewVolume(ortho, {{0.0f, 0.0f, 1.0f}, {1.0f, 1.0f, 2.0f}}))
       << "faces flush with the walls";
+  // A box across the far cap T(λmax), where the root search ends, inside the walls: its low
+  // corner lies beyond the cap and projects nowhere; the cap's triangle test keeps it.
+  const C3rcData shallow =
+      makeC3rc({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, -1}, {0, 0, -1}, 1.5f);
+  const Bounds3 across_cap{{0.2f, 0.2f, -1.6f}, {0.3f, 0.3f, -1.4f}};
+  ASSERT_TRUE(anyPointProjects(shallow, across_cap, 6));
+  EXPECT_FALSE(hullRejects(shallow, across_cap));
+  EXPECT_TRUE(boxMeetsViewVolume(shallow, across_cap));
+  EXPECT_FALSE(boxMeetsViewVolume(shallow, {{0.2f, 0.2f, -1.8f}, {0.3f, 0.3f, -1.6f}}))
+      << "wholly beyond the cap";
 }
 
 TEST(HybridC3rcFrame, DegenerateReflectorTrianglesAreSkippedAndCounted) {

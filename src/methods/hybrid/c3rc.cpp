@@ -10,9 +10,25 @@ namespace mirage {
 
 namespace {
 
-// Fills info.xy and the MIRAGE_C3RC_MULTIPLE flag: the hull of the λ ranges in which the three
-// construction rays are not all on one side of the swept triangle.
-void findSidednessInterval(C3rcData& c) {
+// T(λ) has collapsed to a segment or a point while all three rays lie in its plane, or has not
+// collapsed and they do (coplanar rays parallel to it): the second case makes every w critical.
+bool raysInAnOpenPlane(const C3rcData& c, float lambda) {
+  const vec3 n = shading::c3rc_normal(c, lambda);
+  const float size = glm::length(vec3(c.n0)) +
+                     lambda * (glm::length(vec3(c.n1)) + lambda * glm::length(vec3(c.n2)));
+  if (!(glm::length(n) > 1e-6f * size)) return false;  // collapsed: T(λ) is its own edges
+  for (const vec4& d : {c.d0, c.d1, c.d2})
+    if (std::abs(glm::dot(vec3(d), n)) > 1e-6f * glm::length(n) * glm::length(vec3(d)))
+      return false;
+  return true;
+}
+
+// Fills info.xy, folds and the MIRAGE_C3RC_MULTIPLE flag. The sidedness quadratics' roots split
+// [0, λmax] into pieces on which each ray keeps its side of T(λ); the pieces where the sides are
+// mixed, merged where they touch (and a root where every ray lies in an uncollapsed T(λ), as a
+// point), are where T(λ) may fold. info.xy is their hull; folds holds them as two intervals,
+// the closest neighbours merged while there are more (the ranges only grow: still conservative).
+void findFolds(C3rcData& c) {
   std::array<float, 8> breaks{};
   int n = 0;
   breaks[size_t(n++)] = 0.0f;
@@ -26,16 +42,35 @@ void findSidednessInterval(C3rcData& c) {
   for (int i = 1; i < n; ++i)  // insertion sort of at most 8 values
     for (int j = i; j > 0 && breaks[size_t(j - 1)] > breaks[size_t(j)]; --j)
       std::swap(breaks[size_t(j - 1)], breaks[size_t(j)]);
-  float lo = 1.0f, hi = 0.0f;  // empty until a mixed piece is found
+  std::array<vec2, 16> runs{};
+  int count = 0;
+  auto add = [&](float a, float b) {
+    if (count > 0 && runs[size_t(count - 1)].y >= a)
+      runs[size_t(count - 1)].y = std::max(runs[size_t(count - 1)].y, b);
+    else
+      runs[size_t(count++)] = vec2(a, b);
+  };
   for (int i = 0; i + 1 < n; ++i) {
-    float a = breaks[size_t(i)], b = breaks[size_t(i + 1)];
-    if (b <= a || shading::c3rc_sides_agree(c, 0.5f * (a + b))) continue;
-    if (lo > hi) lo = a;  // pieces come in ascending order: the first mixed one starts the hull
-    hi = b;
+    const float a = breaks[size_t(i)], b = breaks[size_t(i + 1)];
+    if (i > 0 && raysInAnOpenPlane(c, a)) add(a, a);
+    if (b > a && !shading::c3rc_sides_agree(c, 0.5f * (a + b))) add(a, b);
   }
-  c.info.x = lo;
-  c.info.y = hi;
-  c.info.z = lo <= hi ? float(MIRAGE_C3RC_MULTIPLE) : 0.0f;
+  while (count > 2) {  // merge the two neighbours with the smallest gap
+    int closest = 0;
+    for (int i = 1; i + 1 < count; ++i)
+      if (runs[size_t(i + 1)].x - runs[size_t(i)].y <
+          runs[size_t(closest + 1)].x - runs[size_t(closest)].y)
+        closest = i;
+    runs[size_t(closest)].y = runs[size_t(closest + 1)].y;
+    for (int i = closest + 1; i + 1 < count; ++i) runs[size_t(i)] = runs[size_t(i + 1)];
+    --count;
+  }
+  const vec2 empty(1.0f, 0.0f);
+  const vec2 first = count >= 1 ? runs[0] : empty, second = count >= 2 ? runs[1] : empty;
+  c.folds = vec4(first, second);
+  c.info.x = count >= 1 ? first.x : 1.0f;
+  c.info.y = count >= 1 ? runs[size_t(count - 1)].y : 0.0f;
+  c.info.z = count >= 1 ? float(MIRAGE_C3RC_MULTIPLE) : 0.0f;
 }
 
 // Fills the hull: planes through a base edge along a ray, the base plane, planes through a vertex
@@ -82,7 +117,7 @@ C3rcData makeC3rc(const vec3& v0, const vec3& v1, const vec3& v2, const vec3& d0
   c.n1 = vec4(n1, 0.0f);
   c.n2 = vec4(n2, 0.0f);
   c.info = vec4(1.0f, 0.0f, 0.0f, lambda_max);
-  findSidednessInterval(c);
+  findFolds(c);
   findHull(c);
   return c;
 }

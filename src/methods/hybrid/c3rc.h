@@ -1,6 +1,6 @@
 // Building continuous 3-ray cameras on the CPU (the shared math is c3rc_shared.h): one per
 // reflector triangle from the eye and the vertex normals, moved into an object's space for the
-// culling, with the largest λ worth searching and the sidedness interval filled in.
+// culling, with the largest λ worth searching and the fold intervals filled in.
 #pragma once
 
 #include "core/math.h"
@@ -11,8 +11,9 @@ namespace mirage {
 using shading::C3rcData;
 
 // The C3RC of the triangle (v0, v1, v2) swept along the rays (d0, d1, d2) (any lengths), with
-// roots searched up to lambda_max. Fills the normal coefficients and the λ interval where the
-// rays are not on one side of the swept triangle (info.xy, MIRAGE_C3RC_MULTIPLE).
+// roots searched up to lambda_max. Fills the normal coefficients, the hull planes and the λ
+// ranges where the rays are not on one side of the swept triangle, where it may fold (their
+// hull info.xy, the two intervals folds, MIRAGE_C3RC_MULTIPLE).
 C3rcData makeC3rc(const vec3& v0, const vec3& v1, const vec3& v2, const vec3& d0, const vec3& d1,
                   const vec3& d2, float lambda_max);
 

@@ -28,6 +28,10 @@ bool boxMeetsViewVolume(const C3rcData& c, const Bounds3& box) {
   return shading::c3rc_box_meets_view_volume(c, box.lo, box.hi);
 }
 
+int classifyBox(const C3rcData& c, const Bounds3& box) {
+  return shading::c3rc_classify_box(c, box.lo, box.hi);
+}
+
 void cullLeaves(const KdTree& tree, const C3rcData& c, Culling culling,
                 std::vector<uint32_t>& leaves, CullCounters& counters) {
   if (tree.empty()) return;
@@ -44,9 +48,13 @@ void cullLeaves(const KdTree& tree, const C3rcData& c, Culling culling,
         ++counters.hull_rejects;
         continue;
       }
-      if (culling == Culling::kExact && !boxMeetsViewVolume(c, node.bounds)) {
-        ++counters.exact_rejects;
-        continue;
+      if (culling == Culling::kExact) {
+        const int kind = classifyBox(c, node.bounds);
+        if (kind == MIRAGE_C3RC_BOX_OUT) {
+          ++counters.exact_rejects;
+          continue;
+        }
+        if (kind == MIRAGE_C3RC_BOX_NEAR_FOLD) ++counters.fold_keeps;
       }
     }
     if (node.leaf()) {

@@ -35,6 +35,8 @@ struct C3rcData {
   vec4 n0, n1, n2;  // xyz: coefficients of the swept triangle's normal n(λ) = n0 + λn1 + λ²n2
   vec4 info;        // x, y: the λ interval where the rays are not on one side (x > y: none);
                     // z: flags (MIRAGE_C3RC_*); w: the largest λ searched
+  vec4 folds;       // [x, y] and [z, w]: two λ intervals (empty where the start is above the
+                    // end) that hold every λ where T(λ) may fold (c3rc_cull.h), within info.xy
   vec4 hull[MIRAGE_C3RC_HULL];  // planes a·x ≤ h (xyz = a, unit; w = h) around the view volume
   ivec4 counts;                 // x: planes in hull
 };
@@ -297,7 +299,7 @@ SHARED_FN bool c3rc_sides_agree(C3rcData c, float lambda) {
 SHARED_END
 
 #ifndef MIRAGE_GLSL
-static_assert(sizeof(mirage::shading::C3rcData) == (10 + MIRAGE_C3RC_HULL + 1) * 16,
+static_assert(sizeof(mirage::shading::C3rcData) == (11 + MIRAGE_C3RC_HULL + 1) * 16,
               "C3rcData layout (std430)");
 #endif
 

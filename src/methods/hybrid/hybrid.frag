@@ -6,20 +6,24 @@
 #include "methods/hybrid/hybrid_shared.h"
 
 layout(std430, binding = MIRAGE_BIND_HYBRID_POINTS) readonly buffer PointBlock {
-  PointData points[];
+  vec4 positions[];
 };
-layout(std430, binding = MIRAGE_BIND_HYBRID_SPLATS) readonly buffer SplatBlock { uint splats[]; };
+layout(std430, binding = MIRAGE_BIND_HYBRID_POINT_ATTRIBUTES) readonly buffer AttributeBlock {
+  PointAttributes attributes[];
+};
+layout(std430, binding = MIRAGE_BIND_HYBRID_WINNERS) readonly buffer WinnerBlock {
+  uint winners[];
+};
 layout(binding = MIRAGE_UNIT_HYBRID_PROBES) uniform samplerCubeArray u_probes;
-
-uniform int u_index_bits;
 
 vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflector) {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  uint key = splats[pixel.y * int(frame.viewport.x) + pixel.x];
-  if (key != MIRAGE_HYBRID_EMPTY) {
-    PointData p = points[hybrid_splat_index(key, u_index_bits)];
-    InstanceData inst = instances[int(p.position.w)];
-    vec3 q = (inst.model * vec4(p.position.xyz, 1.0f)).xyz;
+  uint index = winners[pixel.y * int(frame.viewport.x) + pixel.x];
+  if (index != MIRAGE_HYBRID_EMPTY) {
+    vec4 at = positions[index];  // object space; w: the instance
+    PointAttributes p = attributes[index];
+    InstanceData inst = instances[int(at.w)];
+    vec3 q = (inst.model * vec4(at.xyz, 1.0f)).xyz;
     vec3 n = normalize(mat3(inst.normal_matrix) * p.normal.xyz);
     vec3 color = shade_diffuse(p.albedo.rgb, n, frame.light_dir.xyz, frame.light_color.rgb,
                                frame.ambient.rgb);

@@ -54,10 +54,13 @@ void main() {
       atomicAdd(state[MIRAGE_KD_STATE_HULL_REJECTS], 1u);
       return;
     }
-    if (u_culling == MIRAGE_KD_CULL_EXACT &&
-        !c3rc_box_meets_view_volume(c, node.lo.xyz, node.hi.xyz)) {
-      atomicAdd(state[MIRAGE_KD_STATE_EXACT_REJECTS], 1u);
-      return;
+    if (u_culling == MIRAGE_KD_CULL_EXACT) {
+      int kind = c3rc_classify_box(c, node.lo.xyz, node.hi.xyz);
+      if (kind == MIRAGE_C3RC_BOX_OUT) {
+        atomicAdd(state[MIRAGE_KD_STATE_EXACT_REJECTS], 1u);
+        return;
+      }
+      if (kind == MIRAGE_C3RC_BOX_NEAR_FOLD) atomicAdd(state[MIRAGE_KD_STATE_FOLD_KEEPS], 1u);
     }
   }
   if (node.range.w == 0u) {

@@ -10,6 +10,7 @@
 #include "methods/hybrid/hybrid_shared.h"
 #include "methods/hybrid/kd_gpu_cull.h"
 #include "methods/hybrid/point_store.h"
+#include "methods/hybrid/splat_visibility.h"
 #include "render/cube_capture.h"
 
 namespace mirage {
@@ -60,7 +61,6 @@ class HybridMethod final : public Method {
         min_pixels_(minSubPixels(setup.params.integer("hybrid-min-pixels"), pixel_scale_)),
         lod_density_(float(setup.params.real("hybrid-lod")) / float(pixel_scale_ * pixel_scale_)),
         probe_size_(setup.params.integer("envmap-size")),
-        index_bits_(shading::hybrid_index_bits(uint32_t(std::max<size_t>(store_.pointCount(), 1)))),
         splat_program_(gpu::Program::compute("methods/hybrid/hybrid_splat.comp")),
         resolve_program_(
             gpu::Program::graphics("render/shaders/scene.vert", "methods/hybrid/hybrid.frag")),
@@ -119,10 +119,9 @@ class HybridMethod final : public Method {
     last_ = buildC3rcFrame(frame.gpu.scene(), reflectors_, pixels, frame.gpu.instanceMatrices(),
                            frame.view.eye(), store_, options, &meshes);
     if (gpu_cull_) gpu_last_ = gpu_cull_->run(last_.c3rcs, frame.gpu.instanceMatrices(), culling_);
-    splat(frame, options.reach);
+    splat(frame);
 
     probes_.bind(MIRAGE_UNIT_HYBRID_PROBES);
-    resolve_program_.set("u_index_bits", index_bits_);
     glDepthFunc(GL_LEQUAL);  // the visibility pass left the reflectors' depth
     frame.passes.drawReflectors(resolve_program_);
     glDepthFunc(GL_LESS);
@@ -149,6 +148,7 @@ class HybridMethod final : public Method {
     s["cull_nodes_tested"] = double(cull.nodes_tested);
     s["cull_hull_rejects"] = double(cull.hull_rejects);
     s["cull_exact_rejects"] = double(cull.exact_rejects);
+    s["cull_fold_keeps"] = double(cull.fold_keeps);
     s["cull_leaves_kept"] = double(cull.leaves_kept);
     s["splat_items"] = double(itemCount());
     s["cull_points_kept"] = double(last_.kept_points);
@@ -156,6 +156,7 @@ class HybridMethod final : public Method {
     s["points_projected"] = double(counters_[0]);
     s["projections"] = double(counters_[1]);
     s["splats_written"] = double(counters_[2]);
+    s["splat_candidates"] = double(counters_[MIRAGE_HYBRID_COUNTER_CANDIDATES]);
     s["points_with_projection"] = double(counters_[3]);
     s["points_facing_away"] = double(counters_[4]);
     s["valid_projection_fraction"] =
@@ -187,8 +188,8 @@ class HybridMethod final : public Method {
   }
 
   // The largest reflector-to-point distance: the diagonal of the reflectors' and the point
-  // clouds' bounds together (not the scene's: a wide floor would stretch the root search and
-  // the splat key's depth range for nothing).
+  // clouds' bounds together (not the scene's: a wide floor would stretch the root search for
+  // nothing).
   float reach(const FrameContext& frame) const {
     Bounds3 b;
     for (int r : reflectors_) b.extend(frame.gpu.instanceBounds(r));
@@ -262,17 +263,11 @@ class HybridMethod final : public Method {
     return pixels;
   }
 
-  void splat(FrameContext& frame, float reach) {
+  void splat(FrameContext& frame) {
     const ivec2 size = frame.target.size();
-    const size_t pixels = size_t(size.x) * size_t(size.y);
-    if (splats_.size() != pixels * sizeof(uint32_t))
-      splats_ = gpu::Buffer(pixels * sizeof(uint32_t));
-    const uint32_t empty = MIRAGE_HYBRID_EMPTY, zero = 0;
-    glClearNamedBufferData(splats_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty);
+    visibility_.begin(size_t(size.x) * size_t(size.y));
     if (counter_buffer_.size() == 0) counter_buffer_ = gpu::Buffer(sizeof(counters_));
-    glClearNamedBufferData(counter_buffer_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    splats_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_SPLATS);
-    store_.bind(MIRAGE_BIND_HYBRID_POINTS);
+    store_.bind(MIRAGE_BIND_HYBRID_POINTS, MIRAGE_BIND_HYBRID_POINT_ATTRIBUTES);
     splat_ms_ = 0.0;
     std::fill(std::begin(counters_), std::end(counters_), 0u);
     if (itemCount() == 0) return;
@@ -285,27 +280,31 @@ class HybridMethod final : public Method {
     counter_buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_COUNTERS);
     frame.target.depth().bind(MIRAGE_UNIT_HYBRID_DEPTH);
     const mat4& proj = frame.view.projectionMatrix();
-    const int depth_bits = 32 - index_bits_;
     splat_program_.set("u_item_count", int(itemCount()));
     splat_program_.set("u_first_only", first_only_ ? 1 : 0);
     splat_program_.set("u_splat_size", splat_size_);
     splat_program_.set("u_pixel_scale", pixel_scale_);
-    splat_program_.set("u_index_bits", index_bits_);
-    splat_program_.set("u_depth_scale", float(double((1ull << depth_bits) - 1) / double(reach)));
     splat_program_.set("u_proj", vec2(proj[2][2], proj[3][2]));
     splat_program_.set("u_occlusion", 0.01f);
     splat_program_.set("u_keep_backfaces", keep_backfaces_ ? 1 : 0);
     const bool timing = frame.timer != nullptr;
     if (timing) glFinish();
     Stopwatch watch;
-    splat_program_.use();
-    glDispatchCompute(GLuint(std::min<size_t>(itemCount(), 65535)), 1, 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    size_t candidates = 0;
+    do {  // again, with a larger candidate buffer, when the candidates overflowed it
+      splat_program_.set("u_candidate_capacity", int(visibility_.prepare()));
+      SplatVisibility::clearWords(counter_buffer_, 0u);
+      splat_program_.use();
+      glDispatchCompute(GLuint(std::min<size_t>(itemCount(), 65535)), 1, 1);
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+      counter_buffer_.download(counters_, sizeof(counters_));
+      candidates = counters_[MIRAGE_HYBRID_COUNTER_CANDIDATES];
+    } while (!visibility_.fitted(candidates));
+    visibility_.pickWinners(candidates);
     if (timing) {
       glFinish();
       splat_ms_ = watch.ms();
     }
-    counter_buffer_.download(counters_, sizeof(counters_));
     checkEveryPairProjected();
   }
 
@@ -329,15 +328,16 @@ class HybridMethod final : public Method {
   bool first_only_, keep_backfaces_, eye_scaled_;
   int pixel_scale_, splat_size_, min_pixels_;
   float lod_density_;
-  int probe_size_, index_bits_;
+  int probe_size_;
   gpu::Program splat_program_, resolve_program_, id_program_, base_program_;
+  SplatVisibility visibility_;
   std::vector<int> reflectors_, background_;
   gpu::Texture probes_, ids_;
   std::unique_ptr<CubeCapture> cube_;
   std::unique_ptr<gpu::Framebuffer> ids_fbo_;
   ivec2 ids_size_{0, 0};
-  gpu::Buffer splats_, c3rc_buffer_, item_buffer_, counter_buffer_;
-  uint32_t counters_[5] = {0, 0, 0, 0, 0};
+  gpu::Buffer c3rc_buffer_, item_buffer_, counter_buffer_;
+  uint32_t counters_[MIRAGE_HYBRID_COUNTERS] = {};
   C3rcFrame last_;
   std::unique_ptr<KdGpuCull> gpu_cull_;  // --hybrid-cull-on gpu
   KdGpuCullResult gpu_last_;

@@ -3,8 +3,10 @@
 // the first only (--hybrid-projections first, the paper's one fragment per point) — and splatted
 // as an s×s square at the reflector point that sees it — or, with a level of detail, a uniform
 // stride through them with proportionally larger splats. Visibility: a splat behind the visible
-// reflector surface at its pixel is dropped (another part of the reflector hides it), and among
-// the rest the point nearest the reflector wins through one atomicMin on the packed key.
+// reflector surface at its pixel is dropped (another part of the reflector hides it); the rest
+// keep the nearest push-back per pixel with one atomicMin on its float bits, and a splat at least
+// as near as the pixel's word was appends itself as a candidate for hybrid_winner.comp, which
+// picks the nearest's index (hybrid_shared.h).
 #include "render/shaders/common.glsl"
 #include "methods/hybrid/c3rc_shared.h"
 #include "methods/hybrid/hybrid_shared.h"
@@ -14,18 +16,23 @@ layout(local_size_x = MIRAGE_HYBRID_GROUP) in;
 layout(std430, binding = MIRAGE_BIND_HYBRID_C3RCS) readonly buffer C3rcBlock { C3rcData c3rcs[]; };
 layout(std430, binding = MIRAGE_BIND_HYBRID_ITEMS) readonly buffer ItemBlock { ivec4 items[]; };
 layout(std430, binding = MIRAGE_BIND_HYBRID_POINTS) readonly buffer PointBlock {
-  PointData points[];
+  vec4 positions[];
 };
-layout(std430, binding = MIRAGE_BIND_HYBRID_SPLATS) coherent buffer SplatBlock { uint splats[]; };
+layout(std430, binding = MIRAGE_BIND_HYBRID_POINT_ATTRIBUTES) readonly buffer AttributeBlock {
+  PointAttributes attributes[];
+};
+layout(std430, binding = MIRAGE_BIND_HYBRID_SPLATS) coherent buffer SplatBlock { uint depths[]; };
 layout(std430, binding = MIRAGE_BIND_HYBRID_COUNTERS) buffer CounterBlock { uint counters[]; };
+layout(std430, binding = MIRAGE_BIND_HYBRID_CANDIDATES) writeonly buffer CandidateBlock {
+  uint candidates[];
+};
 layout(binding = MIRAGE_UNIT_HYBRID_DEPTH) uniform sampler2D u_depth;
 
 uniform int u_item_count;
 uniform int u_first_only;    // 1: the first projection only
 uniform int u_splat_size;    // s: an s×s square; 0: from the magnification
 uniform int u_pixel_scale;   // frame pixels per output pixel along a side (--ssaa)
-uniform int u_index_bits;
-uniform float u_depth_scale;
+uniform int u_candidate_capacity;  // candidates beyond it are counted, not written
 uniform vec2 u_proj;         // the projection matrix's [2][2] and [3][2]: eye depth from z
 uniform float u_occlusion;   // relative depth tolerance of the occlusion test
 uniform int u_keep_backfaces;  // 1: project the back-facing points of closed objects too
@@ -60,7 +67,7 @@ uint splat(C3rcData c, vec4 proj, vec3 q, float spacing, uint index) {
   // The side x side block of pixels whose centres are nearest the projected point.
   vec2 position = (ndc * 0.5f + 0.5f) * vec2(size);
   ivec2 first = ivec2(floor(position - 0.5f * float(side - 1)));
-  uint key = hybrid_splat_key(length(q - base), u_depth_scale, u_index_bits, index);
+  uint key = hybrid_depth_key(length(q - base));
   uint written = 0u;
   for (int dy = 0; dy < side; ++dy)
     for (int dx = 0; dx < side; ++dx) {
@@ -68,7 +75,15 @@ uint splat(C3rcData c, vec4 proj, vec3 q, float spacing, uint index) {
       if (any(lessThan(pixel, ivec2(0))) || any(greaterThanEqual(pixel, size))) continue;
       // Behind the visible reflector surface here: hidden by another part of the reflector.
       if (clip.w > surface_eye_depth(pixel) * (1.0f + u_occlusion)) continue;
-      atomicMin(splats[pixel.y * size.x + pixel.x], key);
+      uint at = uint(pixel.y * size.x + pixel.x);
+      if (hybrid_is_candidate(atomicMin(depths[at], key), key)) {
+        uint slot = atomicAdd(counters[MIRAGE_HYBRID_COUNTER_CANDIDATES], 1u);
+        if (slot < uint(u_candidate_capacity)) {
+          candidates[3u * slot] = at;
+          candidates[3u * slot + 1u] = key;
+          candidates[3u * slot + 2u] = index;
+        }
+      }
       ++written;
     }
   return written;
@@ -86,16 +101,15 @@ void main() {
     float grown = sqrt(stride);
     int taken = stride > 1.0f ? int(ceil(float(it.z) / stride)) : it.z;
     // An item lies in one point cloud: one instance, its matrices and closedness loaded once.
-    int instance = int(points[it.y].position.w);
+    int instance = int(positions[it.y].w);
     mat4 model = instances[instance].model;
+    mat3 linear = mat3(model);
     mat3 normal_matrix = mat3(instances[instance].normal_matrix);
-    float spacing_scale = length(vec3(model[0])) * grown;
-    bool cull_back = u_keep_backfaces == 0 && points[it.y].albedo.w > 0.5f;
+    bool cull_back = u_keep_backfaces == 0 && attributes[it.y].albedo.w > 0.5f;
     for (int i = int(gl_LocalInvocationID.x); i < taken; i += MIRAGE_HYBRID_GROUP) {
       uint index = uint(it.y + min(int(float(i) * stride), it.z - 1));
-      vec4 position = points[index].position, object_normal = points[index].normal;
+      vec4 position = positions[index], object_normal = attributes[index].normal;
       vec3 q = (model * vec4(position.xyz, 1.0f)).xyz;
-      float spacing = object_normal.w * spacing_scale;
       vec4 p0, p1, p2;
       int n = 0;
       bool hidden = cull_back && hybrid_faces_away(normal_matrix * object_normal.xyz, q,
@@ -103,6 +117,10 @@ void main() {
       if (!hidden) n = c3rc_project(c, q, 1.0e-4f, u_first_only != 0, p0, p1, p2);
       facing_away += hidden ? 1u : 0u;
       ++projected;
+      // Only for a point that projects: its spacing in world space, grown with the stride.
+      float spacing = 0.0f;
+      if (n > 0 && u_splat_size == 0)
+        spacing = hybrid_world_spacing(linear, object_normal.xyz, object_normal.w) * grown;
       for (int k = 0; k < n; ++k) {
         written += splat(c, k == 0 ? p0 : (k == 1 ? p1 : p2), q, spacing, index);
       }

@@ -76,7 +76,7 @@ KdGpuCullResult KdGpuCull::run(const std::vector<C3rcData>& c3rcs,
 
   // The query moves into each cloud's space, as on the CPU path (c3rc_frame.cpp) — with the same
   // calls, so that both paths test the same bits. transformC3rc rebuilds the hull and the
-  // sidedness interval (makeC3rc), which would be a second, array-heavy copy in GLSL.
+  // fold intervals (makeC3rc), which would be a second, array-heavy copy in GLSL.
   Stopwatch transform;
   std::vector<mat4> to_object;
   for (const PointCloud& c : clouds)
@@ -130,6 +130,7 @@ KdGpuCullResult KdGpuCull::run(const std::vector<C3rcData>& c3rcs,
   result.cull.nodes_tested = state[MIRAGE_KD_STATE_TESTED];
   result.cull.hull_rejects = state[MIRAGE_KD_STATE_HULL_REJECTS];
   result.cull.exact_rejects = state[MIRAGE_KD_STATE_EXACT_REJECTS];
+  result.cull.fold_keeps = state[MIRAGE_KD_STATE_FOLD_KEEPS];
   result.cull.leaves_kept = state[MIRAGE_KD_STATE_ITEMS];
   return result;
 }

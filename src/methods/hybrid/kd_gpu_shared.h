@@ -22,6 +22,7 @@
 #define MIRAGE_KD_STATE_TESTED 2
 #define MIRAGE_KD_STATE_HULL_REJECTS 3
 #define MIRAGE_KD_STATE_EXACT_REJECTS 4
+#define MIRAGE_KD_STATE_FOLD_KEEPS 5
 #define MIRAGE_KD_STATE_SIZE 8
 
 // The culling modes (Culling in c3rc_cull.h).

@@ -1,6 +1,5 @@
 #include "methods/hybrid/point_store.h"
 
-#include "core/error.h"
 #include "core/timer.h"
 #include "methods/hybrid/hybrid_shared.h"
 
@@ -12,11 +11,6 @@ PointStore::PointStore(const Scene& scene, const PointSetOptions& options,
   std::vector<PointSet> sets = samplePoints(scene, pointSampledInstances(scene), options);
   sample_ms_ = sample.ms();
   for (const PointSet& s : sets) count_ += s.size();
-  if (count_ >= (size_t(1) << 22))
-    throwInput(
-        "hybrid: {} points, more than the 4,194,304 the splat key can index (lower "
-        "--points)",
-        count_);
   Stopwatch build;
   for (PointSet& set : sets) {
     PointCloud cloud;
@@ -39,20 +33,28 @@ PointStore::PointStore(const Scene& scene, const PointSetOptions& options,
   }
 }
 
-void PointStore::bind(GLuint binding) {
+void PointStore::bind(GLuint positions, GLuint attributes) {
   if (!uploaded_) {
-    std::vector<shading::PointData> data;
-    data.reserve(count_);
+    std::vector<vec4> where;
+    std::vector<shading::PointAttributes> what;
+    where.reserve(count_);
+    what.reserve(count_);
     for (const PointCloud& c : clouds_)
-      for (size_t i = 0; i < c.points.size(); ++i)
-        data.push_back({vec4(c.points.positions[i], float(c.points.instance)),
-                        vec4(c.points.normals[i], c.points.spacing),
+      for (size_t i = 0; i < c.points.size(); ++i) {
+        where.push_back(vec4(c.points.positions[i], float(c.points.instance)));
+        what.push_back({vec4(c.points.normals[i], c.points.spacing),
                         vec4(c.points.albedo[i], c.points.closed ? 1.0f : 0.0f)});
-    if (data.empty()) data.push_back(shading::PointData{});
-    buffer_.upload(std::span<const shading::PointData>(data));
+      }
+    if (where.empty()) {
+      where.emplace_back(0.0f);
+      what.emplace_back();
+    }
+    positions_.upload(std::span<const vec4>(where));
+    attributes_.upload(std::span<const shading::PointAttributes>(what));
     uploaded_ = true;
   }
-  buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, binding);
+  positions_.bindBase(GL_SHADER_STORAGE_BUFFER, positions);
+  attributes_.bindBase(GL_SHADER_STORAGE_BUFFER, attributes);
 }
 
 size_t PointStore::leafCount() const {

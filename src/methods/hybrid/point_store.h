@@ -1,6 +1,7 @@
 // The hybrid method's point sets and their kd-trees, built once per scene (rigid motion needs
-// neither rebuilt: points live in object space, the culling moves the query), and the one
-// storage buffer of every point in leaf order that the splatting shader reads.
+// neither rebuilt: points live in object space, the culling moves the query), and the storage
+// buffers of every point in leaf order that the splatting shader reads (positions, and
+// normals and albedos: hybrid_shared.h).
 #pragma once
 
 #include <vector>
@@ -23,8 +24,8 @@ class PointStore {
 
   const std::vector<PointCloud>& clouds() const { return clouds_; }
   size_t pointCount() const { return count_; }
-  // Uploads the buffer on first use; binds it.
-  void bind(GLuint binding);
+  // Uploads the buffers on first use; binds them.
+  void bind(GLuint positions, GLuint attributes);
 
   double sampleMs() const { return sample_ms_; }
   // The kd-trees' build time, and the reordering of the points into leaf order.
@@ -37,7 +38,7 @@ class PointStore {
   std::vector<PointCloud> clouds_;
   size_t count_ = 0;
   double sample_ms_ = 0.0, build_ms_ = 0.0;
-  gpu::Buffer buffer_;
+  gpu::Buffer positions_, attributes_;
   bool uploaded_ = false;
 };
 
