@@ -84,6 +84,46 @@ TEST_F(BillboardImages, OrderKChangesOnlyWhereKthOrderPathsExist) {
   }
 }
 
+TEST_F(BillboardImages, MipSettingTakesEffectAfterACapture) {
+  // The box goes into the environment captured at the reflectors' centroid
+  // (--billboard-objects planar); small spheres minify it. The mip setting changed on a method
+  // that has captured must give the frame a fresh method gives with that setting.
+  Scene scene = spheresOverFloor();
+  CameraDesc& cam = scene.cameras.front();
+  cam.position = cam.target + 3.0f * (cam.position - cam.target);  // far: minified reflections
+  const ivec2 size{160, 120};
+  FrameRenderer renderer(scene, size);
+  const View view(cam, size);
+  const std::map<std::string, std::string> params{{"billboard-objects", "planar"}};
+  auto frame = [&](Method& m, bool mip) {
+    FrameSettings settings;
+    settings.mip = mip;
+    renderer.render(m, view, 0.0f, settings);
+    return renderer.read().color;
+  };
+  for (bool mip : {true, false}) {
+    FrameSettings first;
+    first.mip = !mip;
+    auto toggled = renderer.createMethod("billboard", params, first);
+    frame(*toggled, !mip);
+    const Image after_toggle = frame(*toggled, mip);
+    FrameSettings fresh_settings;
+    fresh_settings.mip = mip;
+    auto fresh = renderer.createMethod("billboard", params, fresh_settings);
+    const Image expected = frame(*fresh, mip);
+    EXPECT_EQ(toggled->stats().at("environment_captures"), 1.0) << "the scene did not change";
+    size_t differing = 0;
+    for (bool d : changedPixels(after_toggle, expected)) differing += d ? 1 : 0;
+    EXPECT_EQ(differing, 0u) << "mip turned " << (mip ? "on" : "off") << " after a capture";
+    // The setting matters in this view (else the comparison above proves nothing).
+    if (mip) {
+      size_t mip_matters = 0;
+      for (bool d : changedPixels(frame(*fresh, false), expected)) mip_matters += d ? 1 : 0;
+      EXPECT_GT(mip_matters, 100u);
+    }
+  }
+}
+
 TEST_F(BillboardImages, RecapturesOnlyWhatChanged) {
   // Floor (planar, shared), a box (one billboard per reflector), two mirror spheres (one
   // reflective billboard each for the other): 1 + 2 + 2 = 5 billboards.
