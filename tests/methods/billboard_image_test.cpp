@@ -184,6 +184,25 @@ TEST_F(BillboardImages, ReflectiveBounceAttenuatesToTheReflectorsSurface) {
   }
 }
 
+TEST_F(BillboardImages, ReflectiveSilhouettesContinueFromTheReflector) {
+  // A reflective billboard's surface point is read with bilinear filtering; at its silhouette
+  // the filter covers texels the sphere does not cover. Divided by the filtered coverage, the
+  // point is an average of the covered texels' points: on the sphere. Undivided, the uncovered
+  // texels' zeros pull it towards the world origin — here 42 units away, with the scene moved —
+  // and the path continues from there. The pixel's attenuation distance shows where: every
+  // mirror pixel that shows the sphere must continue from a point of the sphere, no farther
+  // than its far side. 64^2 texels make the silhouette's ring of texels a pixel wide.
+  const MirrorAndSphere m = mirrorAndSphere(vec3(30.0f, 0.0f, 30.0f));
+  const View view(m.scene.camera(), {240, 160});
+  const std::vector<ImpliedDistance> d =
+      impliedDistances(m, renderBillboard(m.scene, view, 2, "64"), view);
+  ASSERT_GT(d.size(), 500u);
+  int beyond = 0;
+  for (const ImpliedDistance& p : d) beyond += p.implied > p.farthest + 0.01f ? 1 : 0;
+  // Measured: 0 (46 of 1,014 beyond the sphere without the division).
+  EXPECT_EQ(beyond, 0) << "of " << d.size() << " mirror pixels showing the sphere";
+}
+
 TEST_F(BillboardImages, MipSettingTakesEffectAfterACapture) {
   // The box goes into the environment captured at the reflectors' centroid
   // (--billboard-objects planar); small spheres minify it. The mip setting changed on a method
