@@ -198,5 +198,80 @@ TEST(SrdmIntersect, AgreesWithBruteForceMarchingOnRandomRays) {
   EXPECT_LT(mean_depth_error, 0.01);
 }
 
+// Hit/miss agreement with marching the full map, and the mean relative z difference of the
+// rays both hit, over random rays from in front of the three-spheres object to behind it.
+struct SearchAgreement {
+  double agreement = 0.0, depth_error = 0.0;
+};
+
+SearchAgreement searchAgainstMarching(const DepthMap& map, const Srdm& srdm, SrdmSearch search) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> xy(0.0f, float(map.size)), near_d(0.0f, 0.6f),
+      far_d(0.85f, 1.0f);
+  int agree = 0, both_hit = 0;
+  const int total = 4000;
+  double depth_error = 0.0;
+  for (int i = 0; i < total; ++i) {
+    const vec3 from(xy(rng), xy(rng), near_d(rng)), to(xy(rng), xy(rng), far_d(rng));
+    const float ours = intersectSrdm(srdm, from, to, search);
+    const float truth = marchDepthMap(map, from, to);
+    agree += (ours >= 0.0f) == (truth >= 0.0f);
+    if (ours >= 0.0f && truth >= 0.0f) {
+      ++both_hit;
+      const float z_ours = map.eyeDepth(glm::mix(from.z, to.z, ours));
+      const float z_truth = map.eyeDepth(glm::mix(from.z, to.z, truth));
+      depth_error += std::abs(z_ours - z_truth) / z_truth;
+    }
+  }
+  return {double(agree) / total, depth_error / std::max(both_hit, 1)};
+}
+
+TEST(SrdmIntersect, InterpolatedRowsAlongADomainAreThatDomainsRow) {
+  // A projected ray along a domain's angle gives the other domain no weight: the blend of the
+  // two rows is the one row's polyline, so the crossing must be the one row's.
+  const DepthMap map = testMap(128);
+  const int n = 9;
+  const Srdm srdm = buildSrdm(map, {n, 16, SrdmSimplifier::kGreedy});
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> xy(20.0f, 108.0f), len(10.0f, 100.0f), d0(0.0f, 0.6f),
+      d1(0.85f, 1.0f);
+  int hits = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const float theta = shading::srdm_theta(i % n, n) + (i % 2 == 0 ? 0.0f : MIRAGE_SRDM_PI);
+    const vec2 a(xy(rng), xy(rng));
+    const vec2 b = a + len(rng) * vec2(std::cos(theta), std::sin(theta));
+    const vec3 from(a, d0(rng)), to(b, d1(rng));
+    const float one = intersectSrdm(srdm, from, to, SrdmSearch::kOneRow);
+    const float blend = intersectSrdm(srdm, from, to, SrdmSearch::kTwoRowsInterpolated);
+    hits += one >= 0.0f;
+    ASSERT_EQ(one >= 0.0f, blend >= 0.0f) << "ray " << i;
+    if (one >= 0.0f) {
+      EXPECT_NEAR(blend, one, 1e-4f) << "ray " << i;
+    }
+  }
+  EXPECT_GT(hits, 200);
+}
+
+TEST(SrdmIntersect, InterpolatedRowsFollowTheRayBetweenCoarseDomains) {
+  // At n = 9 (20 degrees) one row departs from an oblique ray by up to 10 degrees; the two
+  // nearest domains' rows interpolated must agree with marching the full map better.
+  const DepthMap map = testMap(128);
+  for (int n : {9, 18}) {
+    const Srdm srdm = buildSrdm(map, {n, 16, SrdmSimplifier::kGreedy});
+    const SearchAgreement one = searchAgainstMarching(map, srdm, SrdmSearch::kOneRow);
+    const SearchAgreement hit = searchAgainstMarching(map, srdm, SrdmSearch::kTwoRowsHit);
+    const SearchAgreement blend =
+        searchAgainstMarching(map, srdm, SrdmSearch::kTwoRowsInterpolated);
+    std::printf(
+        "n = %d: agreement / mean relative z difference: one row %.4f / %.4f%%, "
+        "hit row %.4f / %.4f%%, interpolated %.4f / %.4f%%\n",
+        n, one.agreement, 100.0 * one.depth_error, hit.agreement, 100.0 * hit.depth_error,
+        blend.agreement, 100.0 * blend.depth_error);
+    // Measured: MEASURE.
+    EXPECT_GE(blend.agreement, one.agreement) << "n = " << n;
+    EXPECT_LT(blend.depth_error, one.depth_error) << "n = " << n;
+  }
+}
+
 }  // namespace
 }  // namespace mirage

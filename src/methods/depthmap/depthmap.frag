@@ -20,6 +20,7 @@ uniform int u_depthmap_size = 256;
 uniform int u_srdm_n = 60;
 uniform int u_srdm_m = 8;
 uniform int u_srdm_rows = 1;
+uniform int u_srdm_second = MIRAGE_SRDM_SECOND_HIT;
 uniform int u_depthmap_search = MIRAGE_DEPTHMAP_SEARCH_SRDM;
 
 // The SRDM layer of domain 0 of the map being searched.
@@ -68,8 +69,12 @@ bool depthmap_search(DepthMapData map, bool self, vec3 origin, vec3 dir,
     lambda = depthmap_march(map.info.x, u_depthmap_size, p0, p1, examined);
   } else {
     g_srdm_base = map.info.y;
-    lambda = u_srdm_rows == 2 ? srdm_intersect_two_rows(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m)
-                              : srdm_intersect(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
+    if (u_srdm_rows == 1)
+      lambda = srdm_intersect(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
+    else if (u_srdm_second == MIRAGE_SRDM_SECOND_INTERPOLATE)
+      lambda = srdm_intersect_interpolated(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
+    else
+      lambda = srdm_intersect_two_rows(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
   }
   if (lambda < 0.0f) return false;
   float mu = depthmap_unproject_fraction(lambda, c0.w, c1.w);

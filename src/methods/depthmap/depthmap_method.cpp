@@ -42,6 +42,8 @@ class DepthMapMethod final : public Method {
         last_bounce_reflective_(setup.params.text("last-bounce") == "all"),
         linear_(setup.params.text("depthmap-search") == "linear"),
         rows_(setup.params.integer("srdm-rows")),
+        second_(setup.params.text("srdm-second") == "interpolate" ? MIRAGE_SRDM_SECOND_INTERPOLATE
+                                                                  : MIRAGE_SRDM_SECOND_HIT),
         program_(gpu::Program::graphics("render/shaders/scene.vert",
                                         "methods/depthmap/depthmap.frag", shaderDefines(specs_))),
         base_program_(
@@ -89,6 +91,7 @@ class DepthMapMethod final : public Method {
     program_.set("u_srdm_n", srdm_.domains);
     program_.set("u_srdm_m", srdm_.points);
     program_.set("u_srdm_rows", rows_);
+    program_.set("u_srdm_second", second_);
     program_.set("u_depthmap_search",
                  linear_ ? MIRAGE_DEPTHMAP_SEARCH_LINEAR : MIRAGE_DEPTHMAP_SEARCH_SRDM);
     drawReflectorsOnce(frame.passes, base_program_, program_);
@@ -129,7 +132,7 @@ class DepthMapMethod final : public Method {
   BillboardStage stage_;
   DepthMapCapture capture_;
   bool last_bounce_reflective_, linear_;
-  int rows_;
+  int rows_, second_;
   gpu::Program program_, base_program_;
   gpu::Buffer maps_;
   int last_captures_ = 0;
@@ -171,7 +174,11 @@ MethodEntry depthmapMethodEntry() {
                         "along the projected ray (the baseline)"),
       ParamSpec::integer("srdm-rows", 1, 2, 1,
                          "SRDM rows per search: 1 (the paper: the row through the projected "
-                         "ray's midpoint), 2 (then the row through that row's hit)")};
+                         "ray's midpoint), 2 (a second row, --srdm-second)"),
+      ParamSpec::choice("srdm-second", {"hit", "interpolate"}, "hit",
+                        "the second row of --srdm-rows 2: the row through the first row's hit, "
+                        "which answers instead, or the next nearest domain's row, the two rows' "
+                        "depths interpolated by angle (the paper's two best rows)")};
   for (const ParamSpec& p : billboardStageParams()) entry.info.params.push_back(p);
   entry.info.counters = {"depthmap_color_captures", "depthmap_depth_captures", "srdm_builds",
                          "billboard_captures", "environment_captures"};

@@ -18,6 +18,10 @@
 #define MIRAGE_DEPTHMAP_SEARCH_SRDM 0
 #define MIRAGE_DEPTHMAP_SEARCH_LINEAR 1
 
+// --srdm-second: what the second row of --srdm-rows 2 is
+#define MIRAGE_SRDM_SECOND_HIT 0          // the row through the first row's hit
+#define MIRAGE_SRDM_SECOND_INTERPOLATE 1  // the next domain's row, depths interpolated
+
 SHARED_BEGIN
 
 // One depth map of one object. The maps of an object are consecutive; the first holds their
