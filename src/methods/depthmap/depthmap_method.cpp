@@ -41,6 +41,7 @@ class DepthMapMethod final : public Method {
             setup.params.text("srdm-builder") == "gpu" ? SrdmBuilder::kGpu : SrdmBuilder::kCpu),
         last_bounce_reflective_(setup.params.text("last-bounce") == "all"),
         linear_(setup.params.text("depthmap-search") == "linear"),
+        fallback_(setup.params.text("depthmap-fallback") == "on"),
         rows_(setup.params.integer("srdm-rows")),
         second_(setup.params.text("srdm-second") == "interpolate" ? MIRAGE_SRDM_SECOND_INTERPOLATE
                                                                   : MIRAGE_SRDM_SECOND_HIT),
@@ -92,6 +93,7 @@ class DepthMapMethod final : public Method {
     program_.set("u_srdm_m", srdm_.points);
     program_.set("u_srdm_rows", rows_);
     program_.set("u_srdm_second", second_);
+    program_.set("u_depthmap_tries", fallback_ ? options_.maps : 1);
     program_.set("u_depthmap_search",
                  linear_ ? MIRAGE_DEPTHMAP_SEARCH_LINEAR : MIRAGE_DEPTHMAP_SEARCH_SRDM);
     drawReflectorsOnce(frame.passes, base_program_, program_);
@@ -131,7 +133,7 @@ class DepthMapMethod final : public Method {
   std::vector<DepthMapSpec> specs_;
   BillboardStage stage_;
   DepthMapCapture capture_;
-  bool last_bounce_reflective_, linear_;
+  bool last_bounce_reflective_, linear_, fallback_;
   int rows_, second_;
   gpu::Program program_, base_program_;
   gpu::Buffer maps_;
@@ -156,7 +158,11 @@ MethodEntry depthmapMethodEntry() {
                       "field of view of the depth-map cameras, in degrees"),
       ParamSpec::integer("depthmap-maps", 1, 6, 1,
                          "depth maps per object: 1 from the reflectors, 2 adds the opposite "
-                         "side, up to 6 around; a ray uses the one looking most along it"),
+                         "side, up to 6 around; a ray tries them in order of how nearly each "
+                         "looks along it"),
+      ParamSpec::choice("depthmap-fallback", {"on", "off"}, "on",
+                        "with several maps per object, a ray that misses in the map looking "
+                        "most along it tries the next (on), or misses the object (off)"),
       ParamSpec::integer("self-maps", 0, 6, 0,
                          "depth maps of each curved reflector of itself, for its "
                          "self-reflections (0 = none: a reflector never reflects itself)"),
