@@ -254,7 +254,8 @@ TEST(SrdmIntersect, InterpolatedRowsAlongADomainAreThatDomainsRow) {
 
 TEST(SrdmIntersect, InterpolatedRowsFollowTheRayBetweenCoarseDomains) {
   // At n = 9 (20 degrees) one row departs from an oblique ray by up to 10 degrees; the two
-  // nearest domains' rows interpolated must agree with marching the full map better.
+  // nearest domains' rows interpolated must agree with marching the full map better, at the
+  // midpoint and at the first row's hit.
   const DepthMap map = testMap(128);
   for (int n : {9, 18}) {
     const Srdm srdm = buildSrdm(map, {n, 16, SrdmSimplifier::kGreedy});
@@ -262,14 +263,21 @@ TEST(SrdmIntersect, InterpolatedRowsFollowTheRayBetweenCoarseDomains) {
     const SearchAgreement hit = searchAgainstMarching(map, srdm, SrdmSearch::kTwoRowsHit);
     const SearchAgreement blend =
         searchAgainstMarching(map, srdm, SrdmSearch::kTwoRowsInterpolated);
+    const SearchAgreement hit_blend =
+        searchAgainstMarching(map, srdm, SrdmSearch::kHitInterpolated);
     std::printf(
-        "n = %d: agreement / mean relative z difference: one row %.4f / %.4f%%, "
-        "hit row %.4f / %.4f%%, interpolated %.4f / %.4f%%\n",
+        "n = %d: agreement / mean relative z difference: one row %.4f / %.4f%%, hit row "
+        "%.4f / %.4f%%, interpolated %.4f / %.4f%%, interpolated at the hit %.4f / %.4f%%\n",
         n, one.agreement, 100.0 * one.depth_error, hit.agreement, 100.0 * hit.depth_error,
-        blend.agreement, 100.0 * blend.depth_error);
-    // Measured: MEASURE.
+        blend.agreement, 100.0 * blend.depth_error, hit_blend.agreement,
+        100.0 * hit_blend.depth_error);
+    // Measured (agreement / mean relative z difference): n = 9: one row 0.9805 / 0.504%, hit
+    // row 0.9865 / 0.297%, interpolated 0.9848 / 0.377%, interpolated at the hit 0.9868 /
+    // 0.285%; n = 18: 0.9875 / 0.395%, 0.9900 / 0.302%, 0.9892 / 0.308%, 0.9900 / 0.280%.
     EXPECT_GE(blend.agreement, one.agreement) << "n = " << n;
     EXPECT_LT(blend.depth_error, one.depth_error) << "n = " << n;
+    EXPECT_GE(hit_blend.agreement, one.agreement) << "n = " << n;
+    EXPECT_LT(hit_blend.depth_error, hit.depth_error) << "n = " << n;
   }
 }
 

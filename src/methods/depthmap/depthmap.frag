@@ -75,6 +75,8 @@ bool depthmap_search(DepthMapData map, bool self, vec3 origin, vec3 dir,
       lambda = srdm_intersect(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
     else if (u_srdm_second == MIRAGE_SRDM_SECOND_INTERPOLATE)
       lambda = srdm_intersect_interpolated(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
+    else if (u_srdm_second == MIRAGE_SRDM_SECOND_HIT_INTERPOLATE)
+      lambda = srdm_intersect_hit_interpolated(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
     else
       lambda = srdm_intersect_two_rows(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
   }

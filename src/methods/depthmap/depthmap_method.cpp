@@ -20,6 +20,12 @@ DepthMapOptions depthMapOptions(const ParamValues& params) {
   return o;
 }
 
+int srdmSecond(const std::string& name) {
+  if (name == "interpolate") return MIRAGE_SRDM_SECOND_INTERPOLATE;
+  if (name == "hit-interpolate") return MIRAGE_SRDM_SECOND_HIT_INTERPOLATE;
+  return MIRAGE_SRDM_SECOND_HIT;
+}
+
 SrdmSettings srdmSettings(const ParamValues& params) {
   SrdmSettings s;
   s.domains = params.integer("srdm-n");
@@ -43,8 +49,7 @@ class DepthMapMethod final : public Method {
         linear_(setup.params.text("depthmap-search") == "linear"),
         fallback_(setup.params.text("depthmap-fallback") == "on"),
         rows_(setup.params.integer("srdm-rows")),
-        second_(setup.params.text("srdm-second") == "interpolate" ? MIRAGE_SRDM_SECOND_INTERPOLATE
-                                                                  : MIRAGE_SRDM_SECOND_HIT),
+        second_(srdmSecond(setup.params.text("srdm-second"))),
         program_(gpu::Program::graphics("render/shaders/scene.vert",
                                         "methods/depthmap/depthmap.frag", shaderDefines(specs_))),
         base_program_(
@@ -181,10 +186,12 @@ MethodEntry depthmapMethodEntry() {
       ParamSpec::integer("srdm-rows", 1, 2, 1,
                          "SRDM rows per search: 1 (the paper: the row through the projected "
                          "ray's midpoint), 2 (a second row, --srdm-second)"),
-      ParamSpec::choice("srdm-second", {"hit", "interpolate"}, "hit",
-                        "the second row of --srdm-rows 2: the row through the first row's hit, "
-                        "which answers instead, or the next nearest domain's row, the two rows' "
-                        "depths interpolated by angle (the paper's two best rows)")};
+      ParamSpec::choice("srdm-second", {"hit", "interpolate", "hit-interpolate"}, "hit-interpolate",
+                        "what --srdm-rows 2 reads after the row through the projected ray's "
+                        "midpoint: hit, the row through that row's hit (its answer replaces the "
+                        "first); interpolate, instead of it the paper's two best rows (the two "
+                        "nearest domains' rows through the midpoint, depths interpolated by "
+                        "angle); hit-interpolate, the two best rows through the first row's hit")};
   for (const ParamSpec& p : billboardStageParams()) entry.info.params.push_back(p);
   entry.info.counters = {"depthmap_color_captures", "depthmap_depth_captures", "srdm_builds",
                          "billboard_captures", "environment_captures"};

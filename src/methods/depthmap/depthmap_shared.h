@@ -19,8 +19,9 @@
 #define MIRAGE_DEPTHMAP_SEARCH_LINEAR 1
 
 // --srdm-second: what the second row of --srdm-rows 2 is
-#define MIRAGE_SRDM_SECOND_HIT 0          // the row through the first row's hit
-#define MIRAGE_SRDM_SECOND_INTERPOLATE 1  // the next domain's row, depths interpolated
+#define MIRAGE_SRDM_SECOND_HIT 0              // the row through the first row's hit
+#define MIRAGE_SRDM_SECOND_INTERPOLATE 1      // the two best rows at the midpoint, interpolated
+#define MIRAGE_SRDM_SECOND_HIT_INTERPOLATE 2  // the two best rows at the first row's hit
 
 SHARED_BEGIN
 

@@ -331,6 +331,8 @@ float intersectSrdm(const Srdm& srdm, vec3 from, vec3 to, SrdmSearch search) {
       return sh::srdm_intersect_two_rows(from, to, n, w, m);
     case SrdmSearch::kTwoRowsInterpolated:
       return sh::srdm_intersect_interpolated(from, to, n, w, m);
+    case SrdmSearch::kHitInterpolated:
+      return sh::srdm_intersect_hit_interpolated(from, to, n, w, m);
     case SrdmSearch::kOneRow:
       break;
   }

@@ -91,6 +91,7 @@ enum class SrdmSearch {
   kOneRow,               // the row through the projected ray's midpoint (the paper)
   kTwoRowsHit,           // then the row through that row's hit (--srdm-second hit)
   kTwoRowsInterpolated,  // the two nearest domains' rows, interpolated (--srdm-second interpolate)
+  kHitInterpolated,      // those two through the first row's hit (--srdm-second hit-interpolate)
 };
 
 // The shader's ray-SRDM intersection (srdm_intersect_shared.h), run on the CPU: the first crossing

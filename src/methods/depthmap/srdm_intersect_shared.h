@@ -169,16 +169,16 @@ SHARED_FN float srdm_blend_crossing(int domain_a, int row_a, vec2 s_a, int domai
   return -1.0f;
 }
 
-// Two rows interpolated: our reading of the paper's §5.2 ("lookup the two best rows and
-// interpolate", against the edge artifacts of large angular increments). The two best rows are
-// the rows through the projected ray's midpoint in the two domains whose angles bracket its
-// direction; they cross near the midpoint, and at every point the ray lies between them at the
+// Two rows interpolated: the paper's §5.2 ("lookup the two best rows and interpolate", against
+// the edge artifacts of large angular increments). The two best rows for the ray at the
+// fraction `at` of its projection are the rows through that point in the two domains whose
+// angles bracket the ray's direction; they cross near it, and the ray lies between them at the
 // fraction of the angle that separates it from each, so their depths are blended with weights
 // linear in that angle (the nearer domain's weight is 1/2 to 1). A projection shorter than a
 // texel, or a second row outside the map, is searched in the nearer row alone.
-SHARED_FN float srdm_intersect_interpolated(vec3 from, vec3 to, int n, int w, int m) {
+SHARED_FN float srdm_intersect_interpolated_at(vec3 from, vec3 to, int n, int w, int m, float at) {
   vec2 along = vec2(to.x - from.x, to.y - from.y);
-  if (n < 2 || dot(along, along) < 1.0f) return srdm_intersect(from, to, n, w, m);
+  if (n < 2 || dot(along, along) < 1.0f) return srdm_intersect_at(from, to, n, w, m, at);
   float angle = atan(along.y, along.x);
   if (angle < 0.0f) angle += MIRAGE_SRDM_PI;
   float steps = angle / (MIRAGE_SRDM_PI / float(n));
@@ -192,13 +192,27 @@ SHARED_FN float srdm_intersect_interpolated(vec3 from, vec3 to, int n, int w, in
   vec2 a1 = srdm_to_domain(vec2(to.x, to.y), theta_a, float(w));
   vec2 b0 = srdm_to_domain(vec2(from.x, from.y), theta_b, float(w));
   vec2 b1 = srdm_to_domain(vec2(to.x, to.y), theta_b, float(w));
-  int row_a = srdm_row_of(0.5f * (a0.y + a1.y), theta_a, w);
-  int row_b = srdm_row_of(0.5f * (b0.y + b1.y), theta_b, w);
+  int row_a = srdm_row_of(a0.y + (a1.y - a0.y) * at, theta_a, w);
+  int row_b = srdm_row_of(b0.y + (b1.y - b0.y) * at, theta_b, w);
   if (row_a < 0) return -1.0f;
   if (row_b < 0 || abs(b1.x - b0.x) < 1.0e-3f || abs(a1.x - a0.x) < 1.0e-3f)
     return srdm_row_crossing(near_domain, row_a, m, vec2(a0.x, from.z), vec2(a1.x, to.z));
   return srdm_blend_crossing(near_domain, row_a, vec2(a0.x, a1.x), far_domain, row_b,
                              vec2(b0.x, b1.x), 1.0f - abs(off), m, from.z, to.z);
+}
+
+// --srdm-second interpolate: the two best rows through the projected ray's midpoint.
+SHARED_FN float srdm_intersect_interpolated(vec3 from, vec3 to, int n, int w, int m) {
+  return srdm_intersect_interpolated_at(from, to, n, w, m, 0.5f);
+}
+
+// --srdm-second hit-interpolate: the row through the midpoint finds where the ray meets the
+// surface; the two best rows through that point, interpolated, answer instead (a miss included),
+// as the one row through it does for --srdm-second hit. Three rows read.
+SHARED_FN float srdm_intersect_hit_interpolated(vec3 from, vec3 to, int n, int w, int m) {
+  float first = srdm_intersect_at(from, to, n, w, m, 0.5f);
+  if (first < 0.0f) return first;
+  return srdm_intersect_interpolated_at(from, to, n, w, m, first);
 }
 
 SHARED_END
