@@ -22,8 +22,8 @@ uniform int u_srdm_m = 8;
 uniform int u_srdm_rows = 1;
 uniform int u_srdm_second = MIRAGE_SRDM_SECOND_HIT;
 uniform int u_depthmap_search = MIRAGE_DEPTHMAP_SEARCH_SRDM;
-// How many of an object's maps a ray tries (--depthmap-fallback: all of them, or the best only).
-uniform int u_depthmap_tries = 6;
+// How many of an object's maps a ray tries until one is hit (--depthmap-tries).
+uniform int u_depthmap_tries = 2;
 
 // The SRDM layer of domain 0 of the map being searched.
 int g_srdm_base = 0;

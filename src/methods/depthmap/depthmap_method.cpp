@@ -47,7 +47,7 @@ class DepthMapMethod final : public Method {
             setup.params.text("srdm-builder") == "gpu" ? SrdmBuilder::kGpu : SrdmBuilder::kCpu),
         last_bounce_reflective_(setup.params.text("last-bounce") == "all"),
         linear_(setup.params.text("depthmap-search") == "linear"),
-        fallback_(setup.params.text("depthmap-fallback") == "on"),
+        tries_(setup.params.integer("depthmap-tries")),
         rows_(setup.params.integer("srdm-rows")),
         second_(srdmSecond(setup.params.text("srdm-second"))),
         program_(gpu::Program::graphics("render/shaders/scene.vert",
@@ -98,7 +98,7 @@ class DepthMapMethod final : public Method {
     program_.set("u_srdm_m", srdm_.points);
     program_.set("u_srdm_rows", rows_);
     program_.set("u_srdm_second", second_);
-    program_.set("u_depthmap_tries", fallback_ ? options_.maps : 1);
+    program_.set("u_depthmap_tries", tries_);
     program_.set("u_depthmap_search",
                  linear_ ? MIRAGE_DEPTHMAP_SEARCH_LINEAR : MIRAGE_DEPTHMAP_SEARCH_SRDM);
     drawReflectorsOnce(frame.passes, base_program_, program_);
@@ -138,8 +138,8 @@ class DepthMapMethod final : public Method {
   std::vector<DepthMapSpec> specs_;
   BillboardStage stage_;
   DepthMapCapture capture_;
-  bool last_bounce_reflective_, linear_, fallback_;
-  int rows_, second_;
+  bool last_bounce_reflective_, linear_;
+  int tries_, rows_, second_;
   gpu::Program program_, base_program_;
   gpu::Buffer maps_;
   int last_captures_ = 0;
@@ -165,9 +165,10 @@ MethodEntry depthmapMethodEntry() {
                          "depth maps per object: 1 from the reflectors, 2 adds the opposite "
                          "side, up to 6 around; a ray tries them in order of how nearly each "
                          "looks along it"),
-      ParamSpec::choice("depthmap-fallback", {"on", "off"}, "on",
-                        "with several maps per object, a ray that misses in the map looking "
-                        "most along it tries the next (on), or misses the object (off)"),
+      ParamSpec::integer("depthmap-tries", 1, 6, 2,
+                         "with several maps per object, how many a ray tries, in order of how "
+                         "nearly each looks along it, until one is hit (1: the best-aligned "
+                         "only; 2: then the next best)"),
       ParamSpec::integer("self-maps", 0, 6, 0,
                          "depth maps of each curved reflector of itself, for its "
                          "self-reflections (0 = none: a reflector never reflects itself)"),
