@@ -19,11 +19,16 @@ uniform int u_depthmap_count = 0;
 uniform int u_depthmap_size = 256;
 uniform int u_srdm_n = 60;
 uniform int u_srdm_m = 8;
-uniform int u_srdm_rows = 1;
-uniform int u_srdm_second = MIRAGE_SRDM_SECOND_HIT;
-uniform int u_depthmap_search = MIRAGE_DEPTHMAP_SEARCH_SRDM;
-// How many of an object's maps a ray tries until one is hit (--depthmap-tries).
-uniform int u_depthmap_tries = 2;
+// DEPTHMAP_SEARCH (a MIRAGE_DEPTHMAP_SEARCH_* value) and DEPTHMAP_TRIES (--depthmap-tries: how
+// many of an object's maps a ray tries until one is hit) are defined by the method: the shader
+// compiles in the one search it uses, since llvmpipe would pay for the others (it runs both
+// sides of a branch), and a constant bound lets the map loop fold at one try.
+#ifndef DEPTHMAP_SEARCH
+#define DEPTHMAP_SEARCH MIRAGE_DEPTHMAP_SEARCH_SRDM
+#endif
+#ifndef DEPTHMAP_TRIES
+#define DEPTHMAP_TRIES 2
+#endif
 
 // The SRDM layer of domain 0 of the map being searched.
 int g_srdm_base = 0;
@@ -65,21 +70,19 @@ bool depthmap_search(DepthMapData map, bool self, vec3 origin, vec3 dir,
   vec4 c0 = map.view_proj * vec4(origin + t0 * dir, 1.0f);
   vec4 c1 = map.view_proj * vec4(origin + t1 * dir, 1.0f);
   vec3 p0 = depthmap_texel_point(c0, w), p1 = depthmap_texel_point(c1, w);
-  float lambda;
-  if (u_depthmap_search == MIRAGE_DEPTHMAP_SEARCH_LINEAR) {
-    int examined;
-    lambda = depthmap_march(map.info.x, u_depthmap_size, p0, p1, examined);
-  } else {
-    g_srdm_base = map.info.y;
-    if (u_srdm_rows == 1)
-      lambda = srdm_intersect(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
-    else if (u_srdm_second == MIRAGE_SRDM_SECOND_INTERPOLATE)
-      lambda = srdm_intersect_interpolated(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
-    else if (u_srdm_second == MIRAGE_SRDM_SECOND_HIT_INTERPOLATE)
-      lambda = srdm_intersect_hit_interpolated(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
-    else
-      lambda = srdm_intersect_two_rows(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
-  }
+  g_srdm_base = map.info.y;
+#if DEPTHMAP_SEARCH == MIRAGE_DEPTHMAP_SEARCH_LINEAR
+  int examined;
+  float lambda = depthmap_march(map.info.x, u_depthmap_size, p0, p1, examined);
+#elif DEPTHMAP_SEARCH == MIRAGE_DEPTHMAP_SEARCH_HIT
+  float lambda = srdm_intersect_two_rows(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
+#elif DEPTHMAP_SEARCH == MIRAGE_DEPTHMAP_SEARCH_INTERPOLATE
+  float lambda = srdm_intersect_interpolated(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
+#elif DEPTHMAP_SEARCH == MIRAGE_DEPTHMAP_SEARCH_HIT_INTERPOLATE
+  float lambda = srdm_intersect_hit_interpolated(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
+#else
+  float lambda = srdm_intersect(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
+#endif
   if (lambda < 0.0f) return false;
   float mu = depthmap_unproject_fraction(lambda, c0.w, c1.w);
   float t = t0 + mu * (t1 - t0);
@@ -144,7 +147,7 @@ bool impostor_extra_hit(vec3 origin, vec3 dir, int from, bool reflective, float 
     }
     // An object seen from outside: its maps in order of how nearly each camera looks along the
     // ray, until one is hit (depthmap_maps_shared.h).
-    found = depthmap_object_search(dir, first, count, u_depthmap_tries) >= 0 || found;
+    found = depthmap_object_search(dir, first, count, DEPTHMAP_TRIES) >= 0 || found;
   }
   t_best = g_t_best;
   end = g_end;

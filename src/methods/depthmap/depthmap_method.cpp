@@ -20,10 +20,14 @@ DepthMapOptions depthMapOptions(const ParamValues& params) {
   return o;
 }
 
-int srdmSecond(const std::string& name) {
-  if (name == "interpolate") return MIRAGE_SRDM_SECOND_INTERPOLATE;
-  if (name == "hit-interpolate") return MIRAGE_SRDM_SECOND_HIT_INTERPOLATE;
-  return MIRAGE_SRDM_SECOND_HIT;
+// The search the shader compiles in (depthmap_shared.h, DEPTHMAP_SEARCH).
+int depthMapSearch(const ParamValues& params) {
+  if (params.text("depthmap-search") == "linear") return MIRAGE_DEPTHMAP_SEARCH_LINEAR;
+  if (params.integer("srdm-rows") == 1) return MIRAGE_DEPTHMAP_SEARCH_SRDM;
+  const std::string second = params.text("srdm-second");
+  if (second == "hit") return MIRAGE_DEPTHMAP_SEARCH_HIT;
+  if (second == "interpolate") return MIRAGE_DEPTHMAP_SEARCH_INTERPOLATE;
+  return MIRAGE_DEPTHMAP_SEARCH_HIT_INTERPOLATE;
 }
 
 SrdmSettings srdmSettings(const ParamValues& params) {
@@ -46,12 +50,9 @@ class DepthMapMethod final : public Method {
             options_, srdm_,
             setup.params.text("srdm-builder") == "gpu" ? SrdmBuilder::kGpu : SrdmBuilder::kCpu),
         last_bounce_reflective_(setup.params.text("last-bounce") == "all"),
-        linear_(setup.params.text("depthmap-search") == "linear"),
-        tries_(setup.params.integer("depthmap-tries")),
-        rows_(setup.params.integer("srdm-rows")),
-        second_(srdmSecond(setup.params.text("srdm-second"))),
         program_(gpu::Program::graphics("render/shaders/scene.vert",
-                                        "methods/depthmap/depthmap.frag", shaderDefines(specs_))),
+                                        "methods/depthmap/depthmap.frag",
+                                        shaderDefines(specs_, setup.params))),
         base_program_(
             gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")) {}
 
@@ -96,11 +97,6 @@ class DepthMapMethod final : public Method {
     program_.set("u_depthmap_size", options_.size);
     program_.set("u_srdm_n", srdm_.domains);
     program_.set("u_srdm_m", srdm_.points);
-    program_.set("u_srdm_rows", rows_);
-    program_.set("u_srdm_second", second_);
-    program_.set("u_depthmap_tries", tries_);
-    program_.set("u_depthmap_search",
-                 linear_ ? MIRAGE_DEPTHMAP_SEARCH_LINEAR : MIRAGE_DEPTHMAP_SEARCH_SRDM);
     drawReflectorsOnce(frame.passes, base_program_, program_);
   }
 
@@ -119,10 +115,14 @@ class DepthMapMethod final : public Method {
   }
 
  private:
-  static std::vector<std::string> shaderDefines(const std::vector<DepthMapSpec>& specs) {
-    const bool self =
-        std::any_of(specs.begin(), specs.end(), [](const DepthMapSpec& s) { return s.reflector; });
-    return self ? std::vector<std::string>{"DEPTHMAP_SELF"} : std::vector<std::string>{};
+  static std::vector<std::string> shaderDefines(const std::vector<DepthMapSpec>& specs,
+                                                const ParamValues& params) {
+    std::vector<std::string> defines{
+        "DEPTHMAP_SEARCH " + std::to_string(depthMapSearch(params)),
+        "DEPTHMAP_TRIES " + std::to_string(params.integer("depthmap-tries"))};
+    if (std::any_of(specs.begin(), specs.end(), [](const DepthMapSpec& s) { return s.reflector; }))
+      defines.push_back("DEPTHMAP_SELF");
+    return defines;
   }
 
   static BillboardStageOptions stageOptions(const ParamValues& params,
@@ -138,8 +138,7 @@ class DepthMapMethod final : public Method {
   std::vector<DepthMapSpec> specs_;
   BillboardStage stage_;
   DepthMapCapture capture_;
-  bool last_bounce_reflective_, linear_;
-  int tries_, rows_, second_;
+  bool last_bounce_reflective_;
   gpu::Program program_, base_program_;
   gpu::Buffer maps_;
   int last_captures_ = 0;
