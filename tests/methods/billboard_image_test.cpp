@@ -5,6 +5,7 @@
 
 #include "methods/frame.h"
 #include "scene/builtin_scenes.h"
+#include "scene/procedural.h"
 #include "support/gl_test.h"
 #include "support/image_check.h"
 #include "support/render_pair.h"
@@ -81,6 +82,164 @@ TEST_F(BillboardImages, OrderKChangesOnlyWhereKthOrderPathsExist) {
                 spurious, truth_changed);
     EXPECT_GT(recall, 0.9) << "order " << k;
     EXPECT_LT(spurious, 0.01) << "order " << k;
+  }
+}
+
+// A planar mirror facing +z (6 x 3, its centre `shift` + (0, 1.5, 0)) and a sphere of radius
+// 0.6 at `shift` + (0, 1, 1.5) under a black sky, seen obliquely by the camera. The mirror's
+// base is black and its reflection attenuates with distance (range 1); the sphere is a
+// reflector (so it is a reflective billboard for the mirror) that reflects nothing and shows its
+// base, pure green. A mirror pixel that shows the sphere is then green at exactly
+// w = 1 / (1 + d^2), d the distance at which the mirror's reflection is attenuated: the image
+// tells each pixel's d.
+struct MirrorAndSphere {
+  Scene scene;
+  vec3 centre;  // the sphere's
+  float radius = 0.6f;
+  float mirror_z = 0.0f;
+};
+
+MirrorAndSphere mirrorAndSphere(vec3 shift) {
+  MirrorAndSphere m;
+  Scene& s = m.scene;
+  s.name = "mirror-and-sphere";
+  s.environment.intensity = 0.0f;
+  Material glass = Material::mirror("mirror", vec3(0.0f));
+  glass.attenuation_range = 1.0f;
+  const quat face_z = glm::angleAxis(glm::radians(90.0f), vec3(1.0f, 0.0f, 0.0f));
+  addInstance(s, "mirror", addMesh(s, procedural::quad(6.0f, 3.0f)), addMaterial(s, glass),
+              placeAt(shift + vec3(0.0f, 1.5f, 0.0f), vec3(1.0f), face_z));
+  Material green = Material::mirror("green", vec3(0.0f, 1.0f, 0.0f));
+  green.reflectivity = 0.0f;
+  m.centre = shift + vec3(0.0f, 1.0f, 1.5f);
+  addInstance(s, "sphere", addMesh(s, procedural::sphere(m.radius, 128, 64)), addMaterial(s, green),
+              placeAt(m.centre));
+  m.mirror_z = shift.z;
+  finishScene(s, shift + vec3(1.8f, 1.6f, 3.8f), shift + vec3(-0.3f, 1.0f, 0.0f), 50.0f);
+  return m;
+}
+
+// Per mirror pixel that shows the sphere: the attenuation distance the pixel's colour implies,
+// the exact distance along the pixel's reflected ray to the sphere (-1 where the ray passes
+// outside 0.8 of its radius: silhouettes, where a flat stand-in's parallax decides) and the
+// largest distance from the pixel's mirror point to any point of the sphere.
+struct ImpliedDistance {
+  float implied, exact, farthest;
+};
+
+std::vector<ImpliedDistance> impliedDistances(const MirrorAndSphere& m, const RenderedFrame& f,
+                                              const View& view) {
+  std::vector<ImpliedDistance> out;
+  for (int y = 0; y < f.color.height(); ++y)
+    for (int x = 0; x < f.color.width(); ++x) {
+      const float g = f.color(x, y).y;
+      if (f.ids(x, y) != 1 || g < 1.0e-3f) continue;  // not the mirror, or no sphere in it
+      const Ray r = view.primaryRay(float(x) + 0.5f, float(y) + 0.5f);
+      const vec3 q = r.origin + r.direction * ((m.mirror_z - r.origin.z) / r.direction.z);
+      const vec3 u = glm::reflect(r.direction, vec3(0.0f, 0.0f, 1.0f));
+      const vec3 oc = q - m.centre;
+      const float b = glm::dot(oc, u), miss2 = glm::dot(oc, oc) - b * b;
+      const float r2 = m.radius * m.radius;
+      const float exact = miss2 < 0.64f * r2 ? -b - std::sqrt(r2 - miss2) : -1.0f;
+      out.push_back(
+          {std::sqrt(1.0f / std::min(g, 1.0f) - 1.0f), exact, glm::length(oc) + m.radius});
+    }
+  return out;
+}
+
+RenderedFrame renderBillboard(const Scene& scene, const View& view, int order,
+                              const std::string& size) {
+  FrameRenderer renderer(scene, view.size());
+  FrameSettings settings;
+  settings.order = order;
+  auto method = renderer.createMethod("billboard", {{"billboard-size", size}}, settings);
+  renderer.render(*method, view, 0.0f, settings);
+  return renderer.read();
+}
+
+TEST_F(BillboardImages, ReflectiveBounceAttenuatesToTheReflectorsSurface) {
+  // The mirror's reflection is attenuated over the distance to the sphere's surface, where the
+  // path continues, not to the sphere's billboard (a quad through its centre, up to a radius
+  // further). At order 1 the path ends there with the sphere's base; at order 2 it continues.
+  const MirrorAndSphere m = mirrorAndSphere(vec3(0.0f));
+  const View view(m.scene.camera(), {240, 160});
+  for (int order : {1, 2}) {
+    const std::vector<ImpliedDistance> d =
+        impliedDistances(m, renderBillboard(m.scene, view, order, "256"), view);
+    double error = 0.0;
+    int counted = 0;
+    for (const ImpliedDistance& p : d)
+      if (p.exact > 0.0f) {
+        error += std::abs(p.implied - p.exact);
+        ++counted;
+      }
+    ASSERT_GT(counted, 500) << "order " << order << ": the mirror must show the sphere";
+    error /= counted;
+    std::printf("order %d: mean |implied - exact| distance %.4f over %d pixels\n", order, error,
+                counted);
+    // Measured: 0.103 at both orders (the stored point is where the capture camera, looking
+    // along the line between the reflectors' centres, saw the sphere through the texel: the
+    // billboard's parallax); measured to the billboard's quad instead: 0.510.
+    EXPECT_LT(error, 0.2) << "order " << order;
+  }
+}
+
+TEST_F(BillboardImages, ReflectiveSilhouettesContinueFromTheReflector) {
+  // A reflective billboard's surface point is read with bilinear filtering; at its silhouette
+  // the filter covers texels the sphere does not cover. Divided by the filtered coverage, the
+  // point is an average of the covered texels' points: on the sphere. Undivided, the uncovered
+  // texels' zeros pull it towards the world origin — here 42 units away, with the scene moved —
+  // and the path continues from there. The pixel's attenuation distance shows where: every
+  // mirror pixel that shows the sphere must continue from a point of the sphere, no farther
+  // than its far side. 64^2 texels make the silhouette's ring of texels a pixel wide.
+  const MirrorAndSphere m = mirrorAndSphere(vec3(30.0f, 0.0f, 30.0f));
+  const View view(m.scene.camera(), {240, 160});
+  const std::vector<ImpliedDistance> d =
+      impliedDistances(m, renderBillboard(m.scene, view, 2, "64"), view);
+  ASSERT_GT(d.size(), 500u);
+  int beyond = 0;
+  for (const ImpliedDistance& p : d) beyond += p.implied > p.farthest + 0.01f ? 1 : 0;
+  // Measured: 0 (46 of 1,014 beyond the sphere without the division).
+  EXPECT_EQ(beyond, 0) << "of " << d.size() << " mirror pixels showing the sphere";
+}
+
+TEST_F(BillboardImages, MipSettingTakesEffectAfterACapture) {
+  // The box goes into the environment captured at the reflectors' centroid
+  // (--billboard-objects planar); small spheres minify it. The mip setting changed on a method
+  // that has captured must give the frame a fresh method gives with that setting.
+  Scene scene = spheresOverFloor();
+  CameraDesc& cam = scene.cameras.front();
+  cam.position = cam.target + 3.0f * (cam.position - cam.target);  // far: minified reflections
+  const ivec2 size{160, 120};
+  FrameRenderer renderer(scene, size);
+  const View view(cam, size);
+  const std::map<std::string, std::string> params{{"billboard-objects", "planar"}};
+  auto frame = [&](Method& m, bool mip) {
+    FrameSettings settings;
+    settings.mip = mip;
+    renderer.render(m, view, 0.0f, settings);
+    return renderer.read().color;
+  };
+  for (bool mip : {true, false}) {
+    FrameSettings first;
+    first.mip = !mip;
+    auto toggled = renderer.createMethod("billboard", params, first);
+    frame(*toggled, !mip);
+    const Image after_toggle = frame(*toggled, mip);
+    FrameSettings fresh_settings;
+    fresh_settings.mip = mip;
+    auto fresh = renderer.createMethod("billboard", params, fresh_settings);
+    const Image expected = frame(*fresh, mip);
+    EXPECT_EQ(toggled->stats().at("environment_captures"), 1.0) << "the scene did not change";
+    size_t differing = 0;
+    for (bool d : changedPixels(after_toggle, expected)) differing += d ? 1 : 0;
+    EXPECT_EQ(differing, 0u) << "mip turned " << (mip ? "on" : "off") << " after a capture";
+    // The setting matters in this view (else the comparison above proves nothing).
+    if (mip) {
+      size_t mip_matters = 0;
+      for (bool d : changedPixels(frame(*fresh, false), expected)) mip_matters += d ? 1 : 0;
+      EXPECT_GT(mip_matters, 100u);
+    }
   }
 }
 

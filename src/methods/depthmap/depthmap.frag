@@ -1,7 +1,7 @@
 // Method `depthmap`: the impostor paper's depth-map impostors (§4.3) inside its order-K pixel
 // algorithm (methods/impostor/impostor_trace.glsl). Per bounce, each depth-mapped object is
-// tested through the one of its maps that looks most along the ray: the ray is clipped to that
-// camera's frustum, projected into texel space, and searched in one SRDM row (or two, or the
+// tested through its maps in order of how nearly each looks along the ray, until one is hit
+// (depthmap_maps_shared.h): the ray is clipped to that camera's frustum, projected into texel space, and searched in one SRDM row (or two, or the
 // full map with --depthmap-search linear); a hit nearer than every billboard ends the path with
 // the map's colour at the hit, filtered over the ray differential's footprint. A reflector's
 // maps of itself (--self-maps) are searched by the rays that leave it: a hit there reflects the
@@ -19,8 +19,16 @@ uniform int u_depthmap_count = 0;
 uniform int u_depthmap_size = 256;
 uniform int u_srdm_n = 60;
 uniform int u_srdm_m = 8;
-uniform int u_srdm_rows = 1;
-uniform int u_depthmap_search = MIRAGE_DEPTHMAP_SEARCH_SRDM;
+// DEPTHMAP_SEARCH (a MIRAGE_DEPTHMAP_SEARCH_* value) and DEPTHMAP_TRIES (--depthmap-tries: how
+// many of an object's maps a ray tries until one is hit) are defined by the method: the shader
+// compiles in the one search it uses, since llvmpipe would pay for the others (it runs both
+// sides of a branch), and a constant bound lets the map loop fold at one try.
+#ifndef DEPTHMAP_SEARCH
+#define DEPTHMAP_SEARCH MIRAGE_DEPTHMAP_SEARCH_SRDM
+#endif
+#ifndef DEPTHMAP_TRIES
+#define DEPTHMAP_TRIES 2
+#endif
 
 // The SRDM layer of domain 0 of the map being searched.
 int g_srdm_base = 0;
@@ -62,15 +70,19 @@ bool depthmap_search(DepthMapData map, bool self, vec3 origin, vec3 dir,
   vec4 c0 = map.view_proj * vec4(origin + t0 * dir, 1.0f);
   vec4 c1 = map.view_proj * vec4(origin + t1 * dir, 1.0f);
   vec3 p0 = depthmap_texel_point(c0, w), p1 = depthmap_texel_point(c1, w);
-  float lambda;
-  if (u_depthmap_search == MIRAGE_DEPTHMAP_SEARCH_LINEAR) {
-    int examined;
-    lambda = depthmap_march(map.info.x, u_depthmap_size, p0, p1, examined);
-  } else {
-    g_srdm_base = map.info.y;
-    lambda = u_srdm_rows == 2 ? srdm_intersect_two_rows(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m)
-                              : srdm_intersect(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
-  }
+  g_srdm_base = map.info.y;
+#if DEPTHMAP_SEARCH == MIRAGE_DEPTHMAP_SEARCH_LINEAR
+  int examined;
+  float lambda = depthmap_march(map.info.x, u_depthmap_size, p0, p1, examined);
+#elif DEPTHMAP_SEARCH == MIRAGE_DEPTHMAP_SEARCH_HIT
+  float lambda = srdm_intersect_two_rows(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
+#elif DEPTHMAP_SEARCH == MIRAGE_DEPTHMAP_SEARCH_INTERPOLATE
+  float lambda = srdm_intersect_interpolated(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
+#elif DEPTHMAP_SEARCH == MIRAGE_DEPTHMAP_SEARCH_HIT_INTERPOLATE
+  float lambda = srdm_intersect_hit_interpolated(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
+#else
+  float lambda = srdm_intersect(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
+#endif
   if (lambda < 0.0f) return false;
   float mu = depthmap_unproject_fraction(lambda, c0.w, c1.w);
   float t = t0 + mu * (t1 - t0);
@@ -90,9 +102,29 @@ bool depthmap_search(DepthMapData map, bool self, vec3 origin, vec3 dir,
   return true;
 }
 
+// The ray that depthmap_try searches (set by impostor_extra_hit), the nearest hit so far and
+// what it found.
+vec3 g_origin, g_dir, g_dox, g_doy, g_ddx, g_ddy;
+float g_t_min, g_t_best;
+vec4 g_end;
+vec3 depthmap_axis(int map) { return depthmaps[map].forward.xyz; }
+bool depthmap_try(int map) {
+  return depthmap_search(depthmaps[map], false, g_origin, g_dir, g_t_min, g_t_best, g_dox, g_doy,
+                         g_ddx, g_ddy, g_end);
+}
+#include "methods/depthmap/depthmap_maps_shared.h"
+
 bool impostor_extra_hit(vec3 origin, vec3 dir, int from, bool reflective, float t_min,
                         inout float t_best, vec3 dox, vec3 doy, vec3 ddx, vec3 ddy, out vec4 end) {
-  end = vec4(0.0f);
+  g_origin = origin;
+  g_dir = dir;
+  g_dox = dox;
+  g_doy = doy;
+  g_ddx = ddx;
+  g_ddy = ddy;
+  g_t_min = t_min;
+  g_t_best = t_best;
+  g_end = vec4(0.0f);
   bool found = false;
   for (int i = 0; i < u_depthmap_count;) {
     // The object's maps follow each other; the first holds their count.
@@ -109,23 +141,16 @@ bool impostor_extra_hit(vec3 origin, vec3 dir, int from, bool reflective, float 
       // in any map is a crossing of a surface that map sees, so every map is searched and the
       // nearest hit kept: more maps, fewer misses.
       for (int k = first; k < first + count; ++k)
-        found = depthmap_search(depthmaps[k], true, origin, dir, t_min, t_best, dox, doy, ddx,
-                                ddy, end) || found;
+        found = depthmap_search(depthmaps[k], true, origin, dir, t_min, g_t_best, dox, doy, ddx,
+                                ddy, g_end) || found;
       continue;
     }
-    // An object seen from outside: the map whose camera looks most along the ray (§4.3).
-    int best = first;
-    float best_cos = -2.0f;
-    for (int k = first; k < first + count; ++k) {
-      float c = dot(dir, depthmaps[k].forward.xyz);
-      if (c > best_cos) {
-        best_cos = c;
-        best = k;
-      }
-    }
-    found = depthmap_search(depthmaps[best], false, origin, dir, t_min, t_best, dox, doy, ddx,
-                            ddy, end) || found;
+    // An object seen from outside: its maps in order of how nearly each camera looks along the
+    // ray, until one is hit (depthmap_maps_shared.h).
+    found = depthmap_object_search(dir, first, count, DEPTHMAP_TRIES) >= 0 || found;
   }
+  t_best = g_t_best;
+  end = g_end;
   return found;
 }
 

@@ -20,6 +20,16 @@ DepthMapOptions depthMapOptions(const ParamValues& params) {
   return o;
 }
 
+// The search the shader compiles in (depthmap_shared.h, DEPTHMAP_SEARCH).
+int depthMapSearch(const ParamValues& params) {
+  if (params.text("depthmap-search") == "linear") return MIRAGE_DEPTHMAP_SEARCH_LINEAR;
+  if (params.integer("srdm-rows") == 1) return MIRAGE_DEPTHMAP_SEARCH_SRDM;
+  const std::string second = params.text("srdm-second");
+  if (second == "hit") return MIRAGE_DEPTHMAP_SEARCH_HIT;
+  if (second == "interpolate") return MIRAGE_DEPTHMAP_SEARCH_INTERPOLATE;
+  return MIRAGE_DEPTHMAP_SEARCH_HIT_INTERPOLATE;
+}
+
 SrdmSettings srdmSettings(const ParamValues& params) {
   SrdmSettings s;
   s.domains = params.integer("srdm-n");
@@ -40,10 +50,9 @@ class DepthMapMethod final : public Method {
             options_, srdm_,
             setup.params.text("srdm-builder") == "gpu" ? SrdmBuilder::kGpu : SrdmBuilder::kCpu),
         last_bounce_reflective_(setup.params.text("last-bounce") == "all"),
-        linear_(setup.params.text("depthmap-search") == "linear"),
-        rows_(setup.params.integer("srdm-rows")),
         program_(gpu::Program::graphics("render/shaders/scene.vert",
-                                        "methods/depthmap/depthmap.frag", shaderDefines(specs_))),
+                                        "methods/depthmap/depthmap.frag",
+                                        shaderDefines(specs_, setup.params))),
         base_program_(
             gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")) {}
 
@@ -88,9 +97,6 @@ class DepthMapMethod final : public Method {
     program_.set("u_depthmap_size", options_.size);
     program_.set("u_srdm_n", srdm_.domains);
     program_.set("u_srdm_m", srdm_.points);
-    program_.set("u_srdm_rows", rows_);
-    program_.set("u_depthmap_search",
-                 linear_ ? MIRAGE_DEPTHMAP_SEARCH_LINEAR : MIRAGE_DEPTHMAP_SEARCH_SRDM);
     drawReflectorsOnce(frame.passes, base_program_, program_);
   }
 
@@ -109,10 +115,14 @@ class DepthMapMethod final : public Method {
   }
 
  private:
-  static std::vector<std::string> shaderDefines(const std::vector<DepthMapSpec>& specs) {
-    const bool self =
-        std::any_of(specs.begin(), specs.end(), [](const DepthMapSpec& s) { return s.reflector; });
-    return self ? std::vector<std::string>{"DEPTHMAP_SELF"} : std::vector<std::string>{};
+  static std::vector<std::string> shaderDefines(const std::vector<DepthMapSpec>& specs,
+                                                const ParamValues& params) {
+    std::vector<std::string> defines{
+        "DEPTHMAP_SEARCH " + std::to_string(depthMapSearch(params)),
+        "DEPTHMAP_TRIES " + std::to_string(params.integer("depthmap-tries"))};
+    if (std::any_of(specs.begin(), specs.end(), [](const DepthMapSpec& s) { return s.reflector; }))
+      defines.push_back("DEPTHMAP_SELF");
+    return defines;
   }
 
   static BillboardStageOptions stageOptions(const ParamValues& params,
@@ -128,8 +138,7 @@ class DepthMapMethod final : public Method {
   std::vector<DepthMapSpec> specs_;
   BillboardStage stage_;
   DepthMapCapture capture_;
-  bool last_bounce_reflective_, linear_;
-  int rows_;
+  bool last_bounce_reflective_;
   gpu::Program program_, base_program_;
   gpu::Buffer maps_;
   int last_captures_ = 0;
@@ -153,7 +162,12 @@ MethodEntry depthmapMethodEntry() {
                       "field of view of the depth-map cameras, in degrees"),
       ParamSpec::integer("depthmap-maps", 1, 6, 1,
                          "depth maps per object: 1 from the reflectors, 2 adds the opposite "
-                         "side, up to 6 around; a ray uses the one looking most along it"),
+                         "side, up to 6 around; a ray tries them in order of how nearly each "
+                         "looks along it"),
+      ParamSpec::integer("depthmap-tries", 1, 6, 2,
+                         "with several maps per object, how many a ray tries, in order of how "
+                         "nearly each looks along it, until one is hit (1: the best-aligned "
+                         "only; 2: then the next best)"),
       ParamSpec::integer("self-maps", 0, 6, 0,
                          "depth maps of each curved reflector of itself, for its "
                          "self-reflections (0 = none: a reflector never reflects itself)"),
@@ -171,7 +185,13 @@ MethodEntry depthmapMethodEntry() {
                         "along the projected ray (the baseline)"),
       ParamSpec::integer("srdm-rows", 1, 2, 1,
                          "SRDM rows per search: 1 (the paper: the row through the projected "
-                         "ray's midpoint), 2 (then the row through that row's hit)")};
+                         "ray's midpoint), 2 (a second row, --srdm-second)"),
+      ParamSpec::choice("srdm-second", {"hit", "interpolate", "hit-interpolate"}, "hit-interpolate",
+                        "what --srdm-rows 2 reads after the row through the projected ray's "
+                        "midpoint: hit, the row through that row's hit (its answer replaces the "
+                        "first); interpolate, instead of it the paper's two best rows (the two "
+                        "nearest domains' rows through the midpoint, depths interpolated by "
+                        "angle); hit-interpolate, the two best rows through the first row's hit")};
   for (const ParamSpec& p : billboardStageParams()) entry.info.params.push_back(p);
   entry.info.counters = {"depthmap_color_captures", "depthmap_depth_captures", "srdm_builds",
                          "billboard_captures", "environment_captures"};

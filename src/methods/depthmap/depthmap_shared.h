@@ -14,9 +14,12 @@
 #define MIRAGE_UNIT_DEPTHMAP_SRDM 9    // sampler2DArray RGBA32F; x pair, y row, layer map n + i
 #define MIRAGE_UNIT_DEPTHMAP_DEPTH 10  // sampler2DArray (depth); layer = map
 
-// --depthmap-search
-#define MIRAGE_DEPTHMAP_SEARCH_SRDM 0
-#define MIRAGE_DEPTHMAP_SEARCH_LINEAR 1
+// The ray-depth-map search the depth-map shader compiles in (its define DEPTHMAP_SEARCH):
+#define MIRAGE_DEPTHMAP_SEARCH_SRDM 0             // one SRDM row (the paper)
+#define MIRAGE_DEPTHMAP_SEARCH_LINEAR 1           // --depthmap-search linear: the full-map walk
+#define MIRAGE_DEPTHMAP_SEARCH_HIT 2              // --srdm-rows 2 --srdm-second hit
+#define MIRAGE_DEPTHMAP_SEARCH_INTERPOLATE 3      // --srdm-rows 2 --srdm-second interpolate
+#define MIRAGE_DEPTHMAP_SEARCH_HIT_INTERPOLATE 4  // --srdm-rows 2 --srdm-second hit-interpolate
 
 SHARED_BEGIN
 

@@ -323,9 +323,20 @@ inline vec4 srdm_point_pair(int domain, int row, int pair) {
 
 namespace mirage {
 
-float intersectSrdm(const Srdm& srdm, vec3 from, vec3 to) {
+float intersectSrdm(const Srdm& srdm, vec3 from, vec3 to, SrdmSearch search) {
   sh::g_searched = &srdm;
-  return sh::srdm_intersect(from, to, srdm.domains, srdm.size, srdm.points);
+  const int n = srdm.domains, w = srdm.size, m = srdm.points;
+  switch (search) {
+    case SrdmSearch::kTwoRowsHit:
+      return sh::srdm_intersect_two_rows(from, to, n, w, m);
+    case SrdmSearch::kTwoRowsInterpolated:
+      return sh::srdm_intersect_interpolated(from, to, n, w, m);
+    case SrdmSearch::kHitInterpolated:
+      return sh::srdm_intersect_hit_interpolated(from, to, n, w, m);
+    case SrdmSearch::kOneRow:
+      break;
+  }
+  return sh::srdm_intersect(from, to, n, w, m);
 }
 
 SrdmError measureSrdmError(const DepthMap& map, const Srdm& srdm) {

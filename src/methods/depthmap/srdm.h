@@ -86,10 +86,18 @@ void checkSrdmSettings(int size, const SrdmSettings& settings);
 // Builds all n * w rows in parallel (TBB). Throws InputError for settings out of range.
 Srdm buildSrdm(const DepthMap& map, const SrdmSettings& settings);
 
+// The shader's ray-SRDM searches (srdm_intersect_shared.h).
+enum class SrdmSearch {
+  kOneRow,               // the row through the projected ray's midpoint (the paper)
+  kTwoRowsHit,           // then the row through that row's hit (--srdm-second hit)
+  kTwoRowsInterpolated,  // the two nearest domains' rows, interpolated (--srdm-second interpolate)
+  kHitInterpolated,      // those two through the first row's hit (--srdm-second hit-interpolate)
+};
+
 // The shader's ray-SRDM intersection (srdm_intersect_shared.h), run on the CPU: the first crossing
 // of the ray whose clipped projection runs from `from` to `to` in (x, y, d) texel space, as the
 // fraction of the way, or -1.
-float intersectSrdm(const Srdm& srdm, vec3 from, vec3 to);
+float intersectSrdm(const Srdm& srdm, vec3 from, vec3 to, SrdmSearch search = SrdmSearch::kOneRow);
 
 // The relative z error |z' - z| / z of the simplified rows at every foreground sample of every
 // row of every domain (z the eye depth; z' that of the polyline at the sample), the paper's

@@ -25,7 +25,8 @@ class BillboardCapture {
 
   // Colour (diffuse) or normal (reflective) with coverage: RGBA16F, mip-mapped.
   const gpu::Texture& surfaces() const { return surfaces_; }
-  const gpu::Texture& positions() const { return positions_; }  // reflective: surface point
+  // Reflective billboards' surface points, coverage in w (RGBA32F, one level).
+  const gpu::Texture& positions() const { return positions_; }
   long captures() const { return captures_; }
   int size() const { return size_; }
 

@@ -52,9 +52,9 @@ BillboardStage::BillboardStage(const BillboardStageOptions& options)
 
 void BillboardStage::update(FrameContext& frame) {
   GpuScene& gpu = frame.gpu;
-  // Placements and captures depend on the scene's state only (its version) and on the mip
-  // setting; a frame that changes neither (a camera move) has nothing to redo.
-  if (updated_ && updated_version_ == gpu.version() && updated_mip_ == frame.settings.mip) {
+  // Placements and captures depend on the scene's state only (its version): a frame that does
+  // not change it (a camera move, a new mip setting) has nothing to redo.
+  if (updated_ && updated_version_ == gpu.version()) {
     last_captures_ = 0;
     return;
   }
@@ -71,7 +71,6 @@ void BillboardStage::update(FrameContext& frame) {
   updateEnvironment(frame);
   updated_ = true;
   updated_version_ = gpu.version();
-  updated_mip_ = frame.settings.mip;
 }
 
 void BillboardStage::bind(const gpu::Program& program, const GpuScene& gpu) const {
@@ -117,7 +116,9 @@ std::map<std::string, double> BillboardStage::stats() const {
 
 // Diffuse objects without impostors (and the ground, when it morphs into the environment) are
 // reflected through a cube map captured at the reflectors' centroid E, with the distant
-// environment; re-captured when the scene changes.
+// environment; re-captured when the scene changes. Like the billboards' surfaces it always has
+// its full mip chain, so that the mip setting (which only picks the lookup's level in the
+// shader) takes effect in the frame it changes, whatever it was at the capture.
 void BillboardStage::updateEnvironment(FrameContext& frame) {
   const std::vector<int> instances = set_.environmentInstances();
   if (instances.empty()) return;
@@ -126,7 +127,7 @@ void BillboardStage::updateEnvironment(FrameContext& frame) {
   const Scene& scene = gpu.scene();
   const vec3 centre = set_.environment_centre;
   const int size = options_.envmap_size;
-  const int levels = frame.settings.mip ? gpu::Texture::fullMipLevels(size) : 1;
+  const int levels = gpu::Texture::fullMipLevels(size);
   if (environment_.levels() != levels)
     environment_ = gpu::Texture::createCube(GL_RGBA16F, size, levels);
   if (!cube_) cube_ = std::make_unique<CubeCapture>(size);
@@ -136,7 +137,7 @@ void BillboardStage::updateEnvironment(FrameContext& frame) {
     frame.passes.drawBackground();
     frame.passes.drawDiffuseInstances(instances);
   });
-  if (levels > 1) environment_.generateMipmaps();
+  environment_.generateMipmaps();
   env_valid_ = true;
   env_version_ = gpu.version();
   ++env_captures_;

@@ -67,7 +67,7 @@ class BillboardStage {
   uint64_t env_version_ = 0;
   long env_captures_ = 0;
   int last_captures_ = 0;
-  bool updated_ = false, updated_mip_ = false;
+  bool updated_ = false;
   uint64_t updated_version_ = 0;
 };
 

@@ -57,6 +57,16 @@ float billboard_coverage(BillboardData b, vec2 uv) {
 
 #include "methods/impostor/billboard_nearest_shared.h"
 
+// The surface point a reflective billboard holds at uv, filtered over the covered texels only.
+// The capture writes (point, 1) where the reflector covers a texel and leaves (0, 0, 0, 0)
+// elsewhere, so a bilinear lookup at a silhouette returns (sum of w_i p_i, sum of w_i) over the
+// covered texels: dividing by the filtered coverage averages their points. Undivided, the
+// uncovered texels' zeros would pull the point towards the world origin.
+vec3 billboard_surface_point(BillboardData b, vec2 uv) {
+  vec4 p = textureLod(u_billboard_position, vec3(uv, b.corner.w), 0.0f);
+  return p.xyz / max(p.w, 1.0e-6f);
+}
+
 // Once the hit distance of the ray leaving a reflective billboard is known, that reflector's
 // colour mix(base, tint * L, w) is settled into the running sum: it is linear in L, so no
 // stack of bounces is needed.
@@ -119,7 +129,16 @@ vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflecto
       box = false;
     }
     if (box) extra = false;
-    float distance = box ? t_box : (hit >= 0 || extra ? t : MISS_DISTANCE);
+    // A reflective billboard stands in for its reflector: the path goes on from the surface
+    // point its texel holds, not from the quad, so the path's length (the attenuation distance
+    // of the reflector the ray left) is measured to that point.
+    BillboardData hit_board = billboards[max(hit, 0)];
+    bool reflective_hit =
+        !box && !extra && hit >= 0 && hit_board.info.x == MIRAGE_BILLBOARD_REFLECTIVE;
+    vec3 surface_point = billboard_surface_point(hit_board, uv);
+    float distance = box ? t_box
+                         : (reflective_hit ? length(surface_point - origin)
+                                           : (hit >= 0 || extra ? t : MISS_DISTANCE));
     if (pending >= 0) settle(pending, pending_cos, distance, sum, throughput);
     else first_distance = distance;
     env_dir = dir;
@@ -153,7 +172,7 @@ vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflecto
       leaves = b.info.z;
       if (bounce < order) {
         n = normalize(textureLod(u_billboard_surface, vec3(uv, float(b.info.y)), 0.0f).xyz);
-        p = textureLod(u_billboard_position, vec3(uv, b.corner.w), 0.0f).xyz;
+        p = surface_point;
       }
     }
     if (bounce == order) {
