@@ -107,8 +107,8 @@ std::map<std::string, double> statsAt(const Scene& scene, const std::string& met
 }
 
 // A method does at N x N what it does at native resolution, only sampled more finely: its
-// decisions made in pixels are made in output pixels. Zexel's map level (zexels at most 2 output
-// pixels apart), hybrid's level of detail (points per output pixel) and SSR's step budget (two
+// decisions made in pixels are made in output pixels. Zexel's map levels (per tile, zexels at
+// most 2 output pixels apart; their mean), hybrid's level of detail (points per output pixel) and SSR's step budget (two
 // cells more for each pyramid level that N adds) come out the same at
 // --ssaa 1, 2 and 4. Left in frame pixels they would not: the level would drop by one per
 // doubling, the points projected grow 4x, and SSR's rays run out of steps (spheres9, 8 steps: 56%
@@ -134,7 +134,9 @@ TEST_F(SupersampleImages, PixelSizedParametersMeanOutputPixels) {
         n, zexel.at("zexel_level"), zexel1.at("zexel_level"), hybrid.at("lod_points"),
         hybrid1.at("lod_points"), ssr.at("ssr_out_of_steps_fraction"),
         ssr1.at("ssr_out_of_steps_fraction"));
-    EXPECT_EQ(zexel.at("zexel_level"), zexel1.at("zexel_level")) << n;
+    // A few tiles at the mirror's edge change level with the sub-pixel rectangle (measured:
+    // 3.376 against 3.365 at --ssaa 4); in frame pixels the mean would drop by about one.
+    EXPECT_NEAR(zexel.at("zexel_level"), zexel1.at("zexel_level"), 0.1) << n;
     // More triangles smaller than a pixel are seen at N x N (teapot-sphere: 2221 -> 3965 C3RCs),
     // which adds points; left in frame pixels the budget would grow N^2-fold.
     EXPECT_NEAR(hybrid.at("lod_points") / hybrid1.at("lod_points"), 1.0, 0.35) << n;

@@ -54,30 +54,30 @@ class ZexelFrames : public GlTest {
   View view() const { return View(scene_.camera(), size_); }
 };
 
-// Both warpers warp the same zexels to the same places and leave the same exposures; which of
-// the zexels landing on a pixel it shows differs — the nearest (GPU: depth test) or the last in
-// the occlusion-compatible order (CPU), which with s x s splats is the last splat over it — so
-// their frames are compared with the ray tracer's: as close to it within 1 dB (measured: 0.1 dB).
+// Both warpers run one algorithm on one shared code (tiles, McMillan's warp, cells) and the
+// mirror's shader blends what either left: the frames agree but for float rounding between the
+// compute shader and the C++ code, and ties the GPU breaks either way (measured: no pixel
+// differs).
 TEST_F(ZexelFrames, GpuAndCpuWarpersAgree) {
-  FrameSettings settings;
-  settings.order = 1;
-  for (const char* splat : {"1", "3"}) {
+  for (const char* splat : {"1", "3", "0"}) {
     auto params = [&](const char* warper) {
       return Params{{"zexel-splat", splat}, {"zexel-fill", "0"}, {"zexel-warper", warper}};
     };
     const ZexelFrame g = renderZexel(scene_, params("gpu"), {view()});
     const ZexelFrame c = renderZexel(scene_, params("cpu"), {view()});
     EXPECT_EQ(g.stats.at("zexels_warped"), c.stats.at("zexels_warped"));
-    EXPECT_NEAR(g.stats.at("exposed_fraction"), c.stats.at("exposed_fraction"), 0.002) << splat;
-    const double gpu_psnr =
-        reflectorPsnr(renderWithTruth(scene_, "zexel", size_, settings, params("gpu")));
-    const double cpu_psnr =
-        reflectorPsnr(renderWithTruth(scene_, "zexel", size_, settings, params("cpu")));
-    std::printf(
-        "splat %s: reflector PSNR GPU warper %.2f dB, CPU warper %.2f dB; exposed %.4f "
-        "vs %.4f\n",
-        splat, gpu_psnr, cpu_psnr, g.stats.at("exposed_fraction"), c.stats.at("exposed_fraction"));
-    EXPECT_NEAR(gpu_psnr, cpu_psnr, 1.0) << splat;
+    EXPECT_EQ(g.stats.at("exposed_fraction"), c.stats.at("exposed_fraction")) << splat;
+    size_t differ = 0, mirror = 0;
+    for (int y = 0; y < g.frame.color.height(); ++y)
+      for (int x = 0; x < g.frame.color.width(); ++x) {
+        if (g.frame.ids(x, y) == 0) continue;
+        ++mirror;
+        differ += glm::length(vec3(g.frame.color(x, y)) - vec3(c.frame.color(x, y))) > 1e-3f;
+      }
+    std::printf("splat %s: %zu of %zu mirror pixels differ between the warpers; exposed %.4f\n",
+                splat, differ, mirror, g.stats.at("exposed_fraction"));
+    EXPECT_GT(mirror, 1000u);
+    EXPECT_LE(differ, mirror / 1000) << splat;
   }
 }
 
@@ -130,13 +130,13 @@ TEST_F(ZexelFrames, HierarchyWarpsFewerZexelsAtLittleCost) {
   const ivec2 size{640, 480};
   RenderPair full = renderWithTruth(scene_, "zexel", size, settings, {{"zexel-lod", "off"}});
   RenderPair lod = renderWithTruth(scene_, "zexel", size, settings, {{"zexel-lod", "on"}});
-  const ZexelFrame stats =
-      renderZexel(scene_, {{"zexel-lod", "on"}}, {View(scene_.camera(), size)});
-  std::printf("reflector PSNR: full maps %.2f dB, hierarchy %.2f dB (level %.0f, %.0f zexels)\n",
-              reflectorPsnr(full), reflectorPsnr(lod), stats.stats.at("zexel_level"),
-              stats.stats.at("zexels_warped"));
-  EXPECT_GE(stats.stats.at("zexel_level"), 1.0);
-  EXPECT_LE(stats.stats.at("zexels_warped"), 512.0 * 512.0 / 4.0);
+  std::printf(
+      "reflector PSNR: full maps %.2f dB (%.0f zexels), hierarchy %.2f dB (mean level %.2f, "
+      "%.0f zexels)\n",
+      reflectorPsnr(full), full.stats.at("zexels_warped"), reflectorPsnr(lod),
+      lod.stats.at("zexel_level"), lod.stats.at("zexels_warped"));
+  EXPECT_GT(lod.stats.at("zexel_level"), 0.0);
+  EXPECT_LT(lod.stats.at("zexels_warped"), 0.8 * full.stats.at("zexels_warped"));
   EXPECT_GT(reflectorPsnr(lod), reflectorPsnr(full) - 1.0);
 }
 

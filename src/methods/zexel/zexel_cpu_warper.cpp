@@ -1,13 +1,13 @@
 #include "methods/zexel/zexel_cpu_warper.h"
 
 #include <algorithm>
-#include <array>
 #include <atomic>
-#include <cmath>
-#include <limits>
+#include <bit>
 
 #include <tbb/parallel_for.h>
 
+#include "methods/zexel/zexel_shared.h"
+#include "methods/zexel/zexel_splat_shared.h"
 #include "methods/zexel/zexel_warp_shared.h"
 #include "shading/shading.h"
 
@@ -15,183 +15,175 @@ namespace mirage {
 
 namespace {
 
-// Where zexel (x, y) lands: (u, v, depth over the output plane distance); depth <= 0 when it
-// was never written or lands behind the output camera. A zexel that saw nothing is a direction
-// (δ = 0) and lands infinitely far.
-vec3 landing(const ZexelMap2D& map, const mat3& po_inverse, const WarpCamera& in,
-             const WarpCamera& out, int x, int y, float* delta_out = nullptr) {
-  const vec4& t = map.texels[size_t(y) * size_t(map.width) + size_t(x)];
-  if (!(t.w > 0.0f)) return vec3(0.0f, 0.0f, -1.0f);
-  const vec2 xi(float(x) + 0.5f, float(y) + 0.5f);
-  const float delta = t.w >= map.sky ? 0.0f : shading::zexel_disparity_from_distance(in.p, xi, t.w);
-  if (delta_out) *delta_out = delta;
-  return shading::zexel_warp(po_inverse, in.p, in.c, out.c, delta, xi);
-}
-
-// The splat side of a zexel: fixed, or (0) from the warp's magnification.
-int splatSide(int splat, const mat3& po_inverse, const WarpCamera& in, const WarpCamera& out,
-              float delta, int x, int y, vec2 landed, int unit = 1) {
-  if (splat > 0) return splat;
-  return shading::zexel_splat_side(po_inverse, in.p, in.c, out.c, delta,
-                                   vec2(float(x) + 0.5f, float(y) + 0.5f), landed,
-                                   kMaxAutoSplat * unit, unit);
-}
-
-// The s x s block of pixels whose centres are nearest (u, v), clipped to `rect` (within an image
-// `rect_width` pixels wide).
-template <typename Write>
-void splatAt(vec2 uv, int splat, ivec4 rect, int rect_width, Write&& write) {
-  const int x0 = int(std::floor(uv.x - 0.5f * float(splat - 1)));
-  const int y0 = int(std::floor(uv.y - 0.5f * float(splat - 1)));
-  for (int dy = 0; dy < splat; ++dy)
-    for (int dx = 0; dx < splat; ++dx) {
-      const int px = x0 + dx, py = y0 + dy;
-      if (px >= rect.x && py >= rect.y && px < rect.z && py < rect.w)
-        write(size_t(py) * size_t(rect_width) + size_t(px));
-    }
-}
-
-// One sheet: columns [x_begin, x_end) and rows [y_begin, y_end) walked in the given directions.
-struct Sheet {
-  int x_from, x_to, x_step, y_from, y_to, y_step;  // inclusive from, exclusive to
-  int x_lo, x_hi;                                  // its columns, ascending
-  float p_lo, p_hi;  // the range of its zexels' pseudo-angle about the epipole (wedges.h)
+// A zexel as it lands: its cell (-1: none), what the cell keeps of it, and its distance's bits.
+struct Landed {
+  int cell = -1;
+  uint32_t key = 0;
+  uvec4 first{0u}, second{0u};
 };
 
-// Zexels on one line through the epipole (an epipolar line) are the only ones that can land on
-// one another, so a sheet also splits into wedges about the epipole that warp independently, each
-// in the sheet's order: parallel work even where the epipole leaves a single sheet. A zexel's
-// wedge is set by its pseudo-angle |p| = |dy| / (|dx| + |dy|) (dx, dy: its centre from the
-// epipole), monotonic in the angle within a quadrant; per row, |p| >= q holds for the columns
-// with |dx| <= |dy| (1 − q) / q, a run next to the epipole, so each wedge is a column interval.
-struct Wedges {
-  float ex, ey;
-  int count;
-
-  float pseudoAngle(float x, float y) const {
-    const float dx = std::abs(x + 0.5f - ex), dy = std::abs(y + 0.5f - ey);
-    return dy / std::max(dx + dy, 1e-30f);
-  }
-  // The first column past the run of columns of row `y` whose |p| is at least `q`, walking
-  // away from the epipole: cut(q) for a sheet right of the epipole, where the run starts at x_lo.
-  int cut(const Sheet& s, int y, float q, bool right) const {
-    if (q <= 0.0f) return right ? s.x_hi : s.x_lo;
-    const float dy = std::abs(float(y) + 0.5f - ey);
-    const float t = std::min(dy * (1.0f - q) / q, 1e8f);
-    if (right) return std::clamp(int(std::floor(ex - 0.5f + t)) + 1, s.x_lo, s.x_hi);
-    return std::clamp(int(std::ceil(ex - 0.5f - t)), s.x_lo, s.x_hi);
-  }
-  // Wedge k's columns of row y: [first, last).
-  std::array<int, 2> columns(const Sheet& s, int y, int k, bool right) const {
-    auto boundary = [&](int j) {
-      if (j <= 0) return -1.0f;     // every column
-      if (j >= count) return 2.0f;  // none
-      return s.p_lo + (s.p_hi - s.p_lo) * float(j) / float(count);
-    };
-    const int a = cut(s, y, boundary(k), right), b = cut(s, y, boundary(k + 1), right);
-    return right ? std::array<int, 2>{b, a} : std::array<int, 2>{a, b};
-  }
+// A tile of a plan: its map, its level, its word and its first zexel's number in the warp (the
+// numbers break ties between zexels at one distance in one cell the same way on every run).
+struct PlannedTile {
+  size_t map;
+  int level;
+  const ZexelTileWord* word;
+  uint32_t first;
 };
+
+// zexel_warp.comp's splat(): where zexel `k` of a planned tile lands and what its cell keeps.
+Landed land(const ZexelWarpSource& source, const PlannedTile& t, int k, const mat3& po_inverse,
+            const WarpCamera& out, const ZexelSplatOptions& options, int margin) {
+  Landed l;
+  const int span = options.tile_level - t.level, n = 1 << span;
+  const ivec2 texel = zexelTileOf(*t.word) * n + ivec2(k & (n - 1), k >> span);
+  const ZexelMap2D& map = source.levels[t.level];
+  if (texel.x >= map.width || texel.y >= map.height) return l;
+  const vec4& zexel = map.texels[size_t(texel.y) * size_t(map.width) + size_t(texel.x)];
+  if (!(zexel.w > 0.0f)) return l;
+  const mat3 p = shading::zexel_level_matrix(source.camera.p, t.level);
+  const vec2 xi = vec2(texel) + 0.5f;
+  const float delta =
+      zexel.w >= map.sky ? 0.0f : shading::zexel_disparity_from_distance(p, xi, zexel.w);
+  const vec3 o = shading::zexel_warp(po_inverse, p, source.camera.c, out.c, delta, xi);
+  if (!(o.z > 0.0f)) return l;
+  const vec2 landed(o);
+  const float distance =
+      shading::zexel_distance_from(p, source.camera.c, xi, delta, out.c, shading::MISS_DISTANCE);
+  const int side = options.splat > 0 ? options.splat
+                                     : shading::zexel_splat_side(
+                                           po_inverse, p, source.camera.c, out.c, delta, xi, landed,
+                                           kMaxAutoSplat * options.unit, options.unit);
+  const ivec2 first = shading::zexel_splat_origin(landed, side);
+  const ivec4& r = options.rect;
+  if (first.x >= r.z || first.y >= r.w || first.x + side <= r.x || first.y + side <= r.y) return l;
+  l.cell = shading::zexel_cell_index(ivec2(glm::floor(landed)), r, margin);
+  l.key = std::bit_cast<uint32_t>(distance);
+  const float sigma = shading::zexel_kernel_sigma(std::bit_cast<float>(t.word->spacing_bits));
+  l.first = shading::zexel_cell_first(l.key, landed, sigma);
+  l.second = shading::zexel_cell_second(vec3(zexel), landed, side, ivec2(glm::floor(landed)));
+  return l;
+}
+
+// atomicMin of a cell's (distance, number).
+void keepNearest(std::atomic<uint64_t>& cell, uint64_t key) {
+  uint64_t now = cell.load(std::memory_order_relaxed);
+  while (key < now && !cell.compare_exchange_weak(now, key, std::memory_order_relaxed)) {
+  }
+}
 
 }  // namespace
 
-std::vector<uint32_t> warpOcclusionCompatible(const ZexelMap2D& map, const WarpCamera& in,
-                                              const WarpCamera& out, ivec2 size,
-                                              const WarpOptions& options) {
-  std::vector<std::atomic<uint32_t>> shown(size_t(size.x) * size_t(size.y));
-  for (auto& s : shown) s.store(kNoZexel, std::memory_order_relaxed);
-  const mat3 po_inverse = glm::inverse(out.p);
-  const ivec4 clip(glm::max(ivec2(options.rect), ivec2(0)),
-                   glm::min(ivec2(options.rect.z, options.rect.w), size));
-  // The epipole: the output centre seen from the reference camera, homogeneous.
-  const vec3 e = glm::inverse(in.p) * (out.c - in.c);
-  const bool positive = e.z > 0.0f;
-  const float big = 1e9f;
-  const float ex = e.z != 0.0f ? std::clamp(e.x / e.z, -big, big) : (e.x >= 0.0f ? big : -big);
-  const float ey = e.z != 0.0f ? std::clamp(e.y / e.z, -big, big) : (e.y >= 0.0f ? big : -big);
-  // The column and row the epipole falls in, clamped to [0, size]: sheets are the quadrants.
-  const int cx = int(std::clamp(std::floor(ex), 0.0f, float(map.width)));
-  const int cy = int(std::clamp(std::floor(ey), 0.0f, float(map.height)));
-  const Wedges wedges{ex, ey, std::max(options.wedges, 1)};
-  // Toward the epipole (positive) or away from it (negative), per quadrant.
-  auto walk = [&](int lo, int hi, bool below_epipole) {
-    const bool ascending = positive == below_epipole;  // toward the epipole from below: up
-    return ascending ? std::array<int, 3>{lo, hi, 1} : std::array<int, 3>{hi - 1, lo - 1, -1};
-  };
-  std::vector<Sheet> sheets;
-  for (int qx = 0; qx < 2; ++qx)
-    for (int qy = 0; qy < 2; ++qy) {
-      const int x_lo = qx == 0 ? 0 : cx, x_hi = qx == 0 ? cx : map.width;
-      const int y_lo = qy == 0 ? 0 : cy, y_hi = qy == 0 ? cy : map.height;
-      if (x_lo >= x_hi || y_lo >= y_hi) continue;
-      const auto wx = walk(x_lo, x_hi, qx == 0), wy = walk(y_lo, y_hi, qy == 0);
-      Sheet sheet{wx[0], wx[1], wx[2], wy[0], wy[1], wy[2], x_lo, x_hi, 2.0f, -1.0f};
-      for (int corner = 0; corner < 4; ++corner) {
-        const float p = wedges.pseudoAngle(float((corner & 1) ? x_hi - 1 : x_lo),
-                                           float((corner & 2) ? y_hi - 1 : y_lo));
-        sheet.p_lo = std::min(sheet.p_lo, p);
-        sheet.p_hi = std::max(sheet.p_hi, p);
-      }
-      sheets.push_back(sheet);
-    }
-  auto run = [&](const Sheet& s, int k) {
-    const bool right = s.x_lo >= cx;  // the sheet's zexels lie right of the epipole
-    for (int y = s.y_from; y != s.y_to; y += s.y_step) {
-      const auto [first, last] = wedges.columns(s, y, k, right);
-      if (first >= last) continue;
-      const int from = s.x_step > 0 ? first : last - 1, to = s.x_step > 0 ? last : first - 1;
-      for (int x = from; x != to; x += s.x_step) {
-        float delta = 0.0f;
-        const vec3 o = landing(map, po_inverse, in, out, x, y, &delta);
-        if (!(o.z > 0.0f)) continue;
-        const uint32_t index = uint32_t(y) * uint32_t(map.width) + uint32_t(x);
-        const int side =
-            splatSide(options.splat, po_inverse, in, out, delta, x, y, vec2(o), options.unit);
-        splatAt(vec2(o), side, clip, size.x,
-                [&](size_t pixel) { shown[pixel].store(index, std::memory_order_relaxed); });
-      }
-    }
-  };
-  const size_t tasks = sheets.size() * size_t(wedges.count);
-  auto task = [&](size_t i) { run(sheets[i / size_t(wedges.count)], int(i) % wedges.count); };
-  if (options.parallel)
-    tbb::parallel_for(size_t(0), tasks, task);
-  else
-    for (size_t i = 0; i < tasks; ++i) task(i);
-  std::vector<uint32_t> result(shown.size());
-  for (size_t i = 0; i < shown.size(); ++i) result[i] = shown[i].load(std::memory_order_relaxed);
-  return result;
+}  // namespace mirage
+
+// The shared gather reads the cells through this accessor; the cells are the calling thread's.
+namespace mirage::shading {
+namespace {
+thread_local const mirage::ZexelCells* g_cells = nullptr;
+thread_local ivec4 g_rect{0};
+thread_local int g_margin = 0;
+}  // namespace
+inline uvec4 zexel_cell_at(ivec2 pixel, int word) {
+  const int at = zexel_cell_index(pixel, g_rect, g_margin);
+  return at < 0 ? uvec4(MIRAGE_ZEXEL_EMPTY) : (*g_cells)[2 * size_t(at) + size_t(word)];
+}
+}  // namespace mirage::shading
+
+#include "methods/zexel/zexel_gather_shared.h"
+
+namespace mirage {
+
+vec4 gatherZexels(const ZexelCells& cells, const ZexelSplatOptions& options, ivec2 pixel) {
+  shading::g_cells = &cells;
+  shading::g_rect = options.rect;
+  shading::g_margin = zexelCellMargin(options);
+  return shading::zexel_gather(pixel, zexelSplatReach(options), options.tolerance);
 }
 
-std::vector<uint32_t> warpZBuffered(const ZexelMap2D& map, const WarpCamera& in,
-                                    const WarpCamera& out, ivec2 size, int splat) {
-  std::vector<uint32_t> shown(size_t(size.x) * size_t(size.y), kNoZexel);
-  std::vector<float> depth(shown.size(), std::numeric_limits<float>::infinity());
-  const mat3 po_inverse = glm::inverse(out.p);
-  for (int y = 0; y < map.height; ++y)
-    for (int x = 0; x < map.width; ++x) {
-      float delta = 0.0f;
-      const vec3 o = landing(map, po_inverse, in, out, x, y, &delta);
-      if (!(o.z > 0.0f)) continue;
-      const uint32_t index = uint32_t(y) * uint32_t(map.width) + uint32_t(x);
-      const int side = splatSide(splat, po_inverse, in, out, delta, x, y, vec2(o));
-      splatAt(vec2(o), side, ivec4(0, 0, size), size.x, [&](size_t pixel) {
-        if (o.z < depth[pixel]) {
-          depth[pixel] = o.z;
-          shown[pixel] = index;
-        }
-      });
-    }
-  return shown;
+int zexelSplatReach(const ZexelSplatOptions& options) {
+  return (options.splat > 0 ? options.splat : kMaxAutoSplat * options.unit) / 2;
 }
 
-float zexelDistance(const ZexelMap2D& map, const WarpCamera& in, uint32_t index, const vec3& from) {
-  const vec4& t = map.texels[index];
-  if (t.w >= map.sky) return shading::MISS_DISTANCE;
-  const vec2 xi(float(index % uint32_t(map.width)) + 0.5f,
-                float(index / uint32_t(map.width)) + 0.5f);
-  const vec3 ray = in.p * vec3(xi, 1.0f);
-  return glm::length(in.c + glm::normalize(ray) * t.w - from);
+int zexelCellMargin(const ZexelSplatOptions& options) {
+  return std::max(zexelSplatReach(options), options.unit);
+}
+
+size_t zexelCellCount(const ZexelSplatOptions& options) {
+  const int margin = zexelCellMargin(options);
+  return size_t(options.rect.z - options.rect.x + 2 * margin) *
+         size_t(options.rect.w - options.rect.y + 2 * margin);
+}
+
+ZexelCells warpZexels(const std::vector<ZexelWarpSource>& sources,
+                      const std::vector<ZexelTilePlan>& plans, const WarpCamera& out,
+                      const ZexelSplatOptions& options, bool parallel) {
+  const int margin = zexelCellMargin(options);
+  const size_t count = zexelCellCount(options);
+  std::vector<std::atomic<uint64_t>> nearest(count);
+  for (auto& n : nearest) n.store(~uint64_t(0), std::memory_order_relaxed);
+  const mat3 po_inverse = glm::inverse(out.p);
+  std::vector<PlannedTile> tiles;
+  uint32_t zexels = 0;
+  for (size_t m = 0; m < sources.size(); ++m)
+    for (size_t l = 0; l < plans[m].by_level.size(); ++l) {
+      const int level = plans[m].finest + int(l), span = plans[m].tile_level - level;
+      for (const ZexelTileWord& w : plans[m].by_level[l]) {
+        tiles.push_back({m, level, &w, zexels});
+        zexels += 1u << (2 * span);
+      }
+    }
+  // Every zexel of every tile, in parallel over the tiles.
+  auto forEachZexel = [&](auto&& body) {
+    auto tile = [&](size_t i) {
+      const PlannedTile& t = tiles[i];
+      const int per = 1 << (2 * (options.tile_level - t.level));
+      for (int k = 0; k < per; ++k) {
+        const Landed l = land(sources[t.map], t, k, po_inverse, out, options, margin);
+        if (l.cell >= 0) body(l, (uint64_t(l.key) << 32) | (t.first + uint32_t(k)));
+      }
+    };
+    if (parallel)
+      tbb::parallel_for(size_t(0), tiles.size(), tile);
+    else
+      for (size_t i = 0; i < tiles.size(); ++i) tile(i);
+  };
+  // Pass 0: each cell's nearest (distance, number); pass 1: that zexel's words.
+  forEachZexel([&](const Landed& l, uint64_t key) { keepNearest(nearest[size_t(l.cell)], key); });
+  ZexelCells cells(2 * count, uvec4(MIRAGE_ZEXEL_EMPTY, 0u, 0u, 0u));
+  forEachZexel([&](const Landed& l, uint64_t key) {
+    if (nearest[size_t(l.cell)].load(std::memory_order_relaxed) != key) return;
+    cells[2 * size_t(l.cell)] = l.first;
+    cells[2 * size_t(l.cell) + 1] = l.second;
+  });
+  return cells;
+}
+
+ZexelCells warpZexels(const std::vector<ZexelWarpSource>& sources, const WarpCamera& out,
+                      const ZexelSplatOptions& options, bool parallel) {
+  std::vector<ZexelTilePlan> plans;
+  for (const ZexelWarpSource& s : sources) plans.push_back(planZexelTiles(s, out, options));
+  return warpZexels(sources, plans, out, options, parallel);
+}
+
+std::vector<ZexelMap2D> zexelPyramid(const ZexelMap2D& level0) {
+  std::vector<ZexelMap2D> levels = {level0};
+  while (levels.back().width > 1) {
+    const ZexelMap2D& fine = levels.back();
+    ZexelMap2D coarse;
+    coarse.width = coarse.height = std::max(fine.width / 2, 1);
+    coarse.sky = fine.sky;
+    coarse.texels.resize(size_t(coarse.width) * size_t(coarse.height));
+    auto child = [&](int x, int y) {
+      return fine.texels[size_t(y) * size_t(fine.width) + size_t(x)];
+    };
+    for (int y = 0; y < coarse.height; ++y)
+      for (int x = 0; x < coarse.width; ++x)
+        coarse.texels[size_t(y) * size_t(coarse.width) + size_t(x)] =
+            shading::zexel_parent(child(2 * x, 2 * y), child(2 * x + 1, 2 * y),
+                                  child(2 * x, 2 * y + 1), child(2 * x + 1, 2 * y + 1));
+    levels.push_back(std::move(coarse));
+  }
+  return levels;
 }
 
 }  // namespace mirage

@@ -1,58 +1,53 @@
-// The CPU warper of the zexel method (the forward-mapped planar mirror paper, §4.1, after
-// McMillan): zexels warped in an occlusion-compatible order, so that a later zexel landing on a
-// pixel is never behind an earlier one and no z-buffer is needed. The reference image is cut at
-// the epipole (the output camera's centre projected into it) into up to four sheets, each
-// traversed toward the epipole when it is positive (in front of the reference camera) and away
-// from it when negative; the sheets, split further into wedges about the epipole (zexels on
-// different epipolar lines never land on one another), run on parallel threads (TBB). A z-buffered
-// warper is the reference the tests compare it with.
+// The CPU warper of the zexel method: the GPU warper's algorithm (zexel_warp.comp) in C++ on the
+// same shared code (zexel_warp_shared.h, zexel_splat_shared.h) — the planned tiles at their
+// levels, McMillan's warp, each zexel into the cell of the pixel it lands in — with the tiles on
+// parallel threads (TBB). A cell keeps the least (distance, zexel number): a minimum, so the
+// cells are the same to the bit whatever the threads and their interleaving.
+//
+// The paper (§4.1) resolves zexels landing on one pixel by McMillan's occlusion-compatible order
+// instead of a z-buffer, in parallel over the sheets about the epipole. A blend over a depth
+// tolerance needs each pixel's front distance before it can blend, which that order gives only
+// after the last write; and where splats of two parallel sheets (or wedges) met, which zexel was
+// written last depended on the threads' timing. So both warpers take the nearest distance.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
-#include "core/math.h"
+#include "methods/zexel/zexel_tiles.h"
+#include "methods/zexel/zexel_warp_types.h"
 
 namespace mirage {
 
-inline constexpr uint32_t kNoZexel = 0xffffffffu;
-inline constexpr int kMaxAutoSplat = 8;  // as MIRAGE_ZEXEL_MAX_SPLAT
+// The warp's cells: per pixel of the mirror's rectangle (options.rect, within the image) and a
+// margin of zexelCellMargin pixels around it, rows from the bottom (zexel_cell_index), the
+// nearest zexel that landed there, two words (zexel_cell_first and _second; the first's x
+// MIRAGE_ZEXEL_EMPTY where none did) — the words the GPU warper leaves.
+using ZexelCells = std::vector<uvec4>;
 
-// A depth-preserving reflection map: per zexel rgb and the distance along its ray (zero: never
-// written; at least `sky`: saw nothing, a direction that lands infinitely far), rows from the
-// bottom.
-struct ZexelMap2D {
-  int width = 0, height = 0;
-  std::vector<vec4> texels;
-  float sky = 1.0e29f;
-};
+// How far a splat reaches from the pixel it landed in (the largest side / 2); the cells kept
+// around the mirror's rectangle (that, and at least an output pixel: the fill looks there); and
+// how many cells (of two words each).
+int zexelSplatReach(const ZexelSplatOptions& options);
+int zexelCellMargin(const ZexelSplatOptions& options);
+size_t zexelCellCount(const ZexelSplatOptions& options);
 
-// A camera as the warp sees it: its pixel matrix (zexel_warp_shared.h) and centre.
-struct WarpCamera {
-  mat3 p{1.0f};
-  vec3 c{0.0f};
-};
+// Warps `sources` (one or two maps, with their tile plans) into the cells of the image seen by
+// `out`, the tiles on parallel threads when `parallel` (in the calling task arena). Ties (one
+// distance, one cell) go to the zexel first in the plans, whatever the threads.
+ZexelCells warpZexels(const std::vector<ZexelWarpSource>& sources,
+                      const std::vector<ZexelTilePlan>& plans, const WarpCamera& out,
+                      const ZexelSplatOptions& options, bool parallel);
+// The same, planning the tiles first (planZexelTiles).
+ZexelCells warpZexels(const std::vector<ZexelWarpSource>& sources, const WarpCamera& out,
+                      const ZexelSplatOptions& options, bool parallel);
 
-struct WarpOptions {
-  int splat = 1;         // s x s pixels per zexel, centred on where it lands; 0: from the warp's
-                         // magnification (zexel_splat_side), at most kMaxAutoSplat
-  bool parallel = true;  // the sheets on parallel threads
-  ivec4 rect{0, 0, 1 << 30, 1 << 30};  // only pixels in [xy, zw) are written (a mirror's)
-  int wedges = 8;  // each sheet split into this many wedges about the epipole (parallel tasks)
-  // Automatic splats in whole output pixels of this many frame pixels, at most kMaxAutoSplat of
-  // them (--ssaa).
-  int unit = 1;
-};
+// What the mirror shows at `pixel` of those cells (zexel_gather_shared.h, as zexel_mirror.frag
+// runs it): rgb and the nearest covering splat's distance; alpha -1 where none covers it.
+vec4 gatherZexels(const ZexelCells& cells, const ZexelSplatOptions& options, ivec2 pixel);
 
-// Per output pixel (rows from the bottom) the index of the zexel shown there, or kNoZexel.
-std::vector<uint32_t> warpOcclusionCompatible(const ZexelMap2D& map, const WarpCamera& in,
-                                              const WarpCamera& out, ivec2 size,
-                                              const WarpOptions& options);
-// The same with a z-buffer: the zexel nearest the output camera wins (any traversal order).
-std::vector<uint32_t> warpZBuffered(const ZexelMap2D& map, const WarpCamera& in,
-                                    const WarpCamera& out, ivec2 size, int splat);
-
-// The distance from `from` to what zexel `index` saw (MISS_DISTANCE for the sky).
-float zexelDistance(const ZexelMap2D& map, const WarpCamera& in, uint32_t index, const vec3& from);
+// A map's coarser levels from its level 0 as zexel_pyramid.comp builds them (zexel_parent): the
+// levels of a map the tests and benchmarks make on the CPU.
+std::vector<ZexelMap2D> zexelPyramid(const ZexelMap2D& level0);
 
 }  // namespace mirage

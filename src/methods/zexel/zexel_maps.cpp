@@ -5,6 +5,7 @@
 
 #include "methods/zexel/zexel_camera.h"
 #include "methods/zexel/zexel_shared.h"
+#include "methods/zexel/zexel_splat_shared.h"
 #include "methods/zexel/zexel_warp_shared.h"
 #include "shading/shading.h"
 
@@ -38,7 +39,7 @@ void ZexelMirrorMaps::capture(FrameContext& frame, const vec3& point, const vec3
     views_.push_back(zexelHemisphereView(point, normal, directions_.back(), half_diagonal_,
                                          options_.size, options_.fov));
   }
-  const int levels = options_.hierarchy ? gpu::Texture::fullMipLevels(options_.size) : 1;
+  const int levels = gpu::Texture::fullMipLevels(options_.size);
   if (maps_.id() == 0 || maps_.layers() != count() || maps_.levels() != levels)
     maps_ = gpu::Texture::create2DArray(GL_RGBA32F, options_.size, options_.size, count(), levels);
   for (int m = 0; m < count(); ++m) {
@@ -62,12 +63,14 @@ void ZexelMirrorMaps::capture(FrameContext& frame, const vec3& point, const vec3
     glDispatchCompute(GLuint((width + 7) / 8), GLuint((width + 7) / 8), GLuint(count()));
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   }
-  if (options_.cpu_copies) readBack();
+  readBack();
 }
 
 void ZexelMirrorMaps::readBack() {
   cpu_.assign(size_t(count()) * size_t(levels()), ZexelMap2D{});
-  for (int level = 0; level < levels(); ++level) {
+  // The tiles' levels always (the warp plans on them); every level for the CPU warper.
+  const int first = options_.cpu_copies ? 0 : std::min(shading::ZEXEL_TILE_SPAN, levels() - 1);
+  for (int level = first; level < levels(); ++level) {
     const int width = this->width(level);
     std::vector<vec4> all(size_t(width) * size_t(width) * size_t(count()));
     glGetTextureImage(maps_.id(), level, GL_RGBA, GL_FLOAT, GLsizei(all.size() * sizeof(vec4)),

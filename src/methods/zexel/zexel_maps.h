@@ -1,8 +1,10 @@
 // A planar mirror's depth-preserving reflection maps (the forward-mapped planar mirror paper, §3
 // and §4.1): reference cameras on the hemisphere behind the mirror, each capturing the colour and
 // the distance along the ray of the scene in front of it (zexels), in one texture array with a
-// mip-map-like hierarchy (the paper's future work: coarser levels for mirrors seen from afar,
-// each texel the nearest of its four children with the colours of those at its depth averaged).
+// mip-map-like hierarchy (the paper's future work: coarser levels for surfaces seen from afar,
+// each texel the nearest of its four children with the colours of those at its depth averaged;
+// zexel_parent). The hierarchy is built whether or not the warp uses coarser levels: its tiles
+// measure their surface on it (zexel_splat_shared.h).
 #pragma once
 
 #include <algorithm>
@@ -12,7 +14,7 @@
 #include "gpu/program.h"
 #include "gpu/texture.h"
 #include "methods/method.h"
-#include "methods/zexel/zexel_cpu_warper.h"
+#include "methods/zexel/zexel_warp_types.h"
 #include "render/frame_target.h"
 
 namespace mirage {
@@ -22,8 +24,8 @@ struct ZexelMapOptions {
   int count = 1;            // maps on the hemisphere
   float cone = 60.0f;       // their spread from the pole, degrees
   float fov = 100.0f;       // each reference camera's vertical field of view, degrees
-  bool hierarchy = false;   // build the coarser levels
-  bool cpu_copies = false;  // keep every map and level on the CPU too (the CPU warper)
+  bool hierarchy = false;   // warp coarser levels where they suffice (the levels are always built)
+  bool cpu_copies = false;  // keep every level on the CPU too (the CPU warper)
 };
 
 class ZexelMirrorMaps {
@@ -39,7 +41,9 @@ class ZexelMirrorMaps {
   int width(int level) const { return std::max(options_.size >> level, 1); }
   const View& view(int map) const { return views_[size_t(map)]; }
   const gpu::Texture& texture() const { return maps_; }
-  // A map's level on the CPU (cpu_copies), rows from the bottom.
+  // A map's level on the CPU, rows from the bottom: the levels tiles may be planned on (from
+  // ZEXEL_TILE_SPAN) always, every level with cpu_copies (the others are empty). A map's levels
+  // follow each other: &cpuMap(map, 0) + level is cpuMap(map, level).
   const ZexelMap2D& cpuMap(int map, int level) const {
     return cpu_[size_t(map) * size_t(levels()) + size_t(level)];
   }
@@ -54,8 +58,10 @@ class ZexelMirrorMaps {
   // The maps a frame seen from `mirrored_eye` warps: the `count` nearest.
   std::vector<int> select(const vec3& mirrored_eye, int count) const;
 
-  // The coarsest level whose zexels land at most `spacing_goal` pixels apart in `output`, seen
-  // through map `map` (at the mirror's centre).
+  // The coarsest level whose zexels at the mirror plane land at most `spacing_goal` pixels apart
+  // in `output`, seen through map `map` (at the mirror's centre). Nearer the reference camera than
+  // anything it captured, the plane's zexels land the closest together when the mirrored eye is
+  // farther from the mirror than the camera: no surface can use a coarser level (the tiles' level).
   int levelFor(int map, const View& output, float spacing_goal) const;
 
  private:

@@ -2,12 +2,13 @@
 
 #include <algorithm>
 #include <memory>
-#include <optional>
 
 #include "core/error.h"
+#include "methods/zexel/zexel_cpu_warper.h"
 #include "methods/zexel/zexel_curved.h"
 #include "methods/zexel/zexel_maps.h"
 #include "methods/zexel/zexel_shared.h"
+#include "methods/zexel/zexel_splat_shared.h"
 #include "methods/zexel/zexel_warp_pass.h"
 #include "render/mirror_images.h"
 
@@ -39,6 +40,12 @@ void checkDriverLimits(const ZexelMapOptions& o) {
              o.count, layers);
 }
 
+GLuint newQuery() {
+  GLuint id = 0;
+  glCreateQueries(GL_SAMPLES_PASSED, 1, &id);
+  return id;
+}
+
 // A planar mirror: its maps and this frame's warp of them.
 struct ZexelMirror {
   ZexelMirrorMaps maps;
@@ -56,14 +63,15 @@ class ZexelMethod final : public Method {
         splat_(setup.params.integer("zexel-splat") * pixel_scale_),
         threads_(setup.params.integer("zexel-threads")),
         keep_(setup.params.text("zexel-clear") == "off"),
-        fill_(setup.params.integer("zexel-fill") * pixel_scale_),
+        fill_(setup.params.integer("zexel-fill")),
+        tolerance_(float(setup.params.real("zexel-depth-tolerance")) / 100.0f),
         warp_program_(gpu::Program::compute("methods/zexel/zexel_warp.comp")),
         pyramid_program_(gpu::Program::compute("methods/zexel/zexel_pyramid.comp")),
         mirror_program_(
             gpu::Program::graphics("render/shaders/scene.vert", "methods/zexel/zexel_mirror.frag")),
         base_program_(
             gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")),
-        counters_(2 * sizeof(uint32_t)),
+        counters_(MIRAGE_ZEXEL_COUNTERS * sizeof(uint32_t)),
         curved_(setup) {
     checkDriverLimits(options_);
     for (int mirror : planarReflectors(setup.gpu.scene(), &not_planar_, "zexel"))
@@ -92,16 +100,20 @@ class ZexelMethod final : public Method {
   void render(FrameContext& frame) override {
     frame.passes.drawDirect();
     frame.beginPart(gpu::Part::kReflect);
-    zexels_warped_ = 0;
+    zexels_warped_ = tiles_warped_ = tile_levels_ = 0;
     const GLuint zero = 0;
     glClearNamedBufferData(counters_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     counters_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_ZEXEL_COUNTERS);
     std::vector<int> shown;
+    // The mirrors' visible pixels: the samples their draws pass (no atomic in the shader).
+    glBeginQuery(GL_SAMPLES_PASSED, pixels_query_.id());
     for (auto& m : mirrors_)
-      if (auto job = frame.settings.order > 0 ? warp(frame, *m) : std::nullopt) {
-        draw(frame, *m, *job);
+      if (frame.settings.order > 0 && warp(frame, *m)) {
+        draw(frame, *m);
         shown.push_back(m->maps.mirror());
       }
+    glEndQuery(GL_SAMPLES_PASSED);
+    counted_ = true;
     curved_.draw(frame);  // first: the base pass below then fails the depth test there
     base_program_.use();
     for (int i : frame.gpu.scene().reflectorInstances())
@@ -111,15 +123,20 @@ class ZexelMethod final : public Method {
   int orderRendered(int requested) const override { return std::min(requested, 1); }
 
   std::map<std::string, double> stats() const override {
-    uint32_t counts[2] = {0, 0};
+    uint32_t counts[MIRAGE_ZEXEL_COUNTERS] = {};
     counters_.download(counts, sizeof(counts));
+    GLuint samples = 0;
+    if (counted_) glGetQueryObjectuiv(pixels_query_.id(), GL_QUERY_RESULT, &samples);
+    const double pixels = samples;
     std::map<std::string, double> s = {
         {"zexel_maps", double(options_.count) * double(mirrors_.size())},
         {"zexel_captures", double(captures_)},
         {"zexels_warped", double(zexels_warped_)},
-        {"zexel_level", double(level_)},
-        {"mirror_pixels", double(counts[0])},
-        {"exposed_fraction", counts[0] > 0 ? double(counts[1]) / double(counts[0]) : 0.0},
+        // The mean level of the tiles warped (0: every zexel of the full maps).
+        {"zexel_level", tiles_warped_ > 0 ? double(tile_levels_) / double(tiles_warped_) : 0.0},
+        {"mirror_pixels", pixels},
+        {"exposed_fraction",
+         pixels > 0 ? double(counts[MIRAGE_ZEXEL_COUNT_EXPOSED]) / pixels : 0.0},
         {"reflectors_not_planar", double(not_planar_)}};
     curved_.addStats(s);
     return s;
@@ -131,45 +148,66 @@ class ZexelMethod final : public Method {
                                frame.gpu.instanceMatrices()[size_t(mirror)], eye, point, normal);
   }
 
-  // Warps the maps nearest the eye mirrored in `m` into its target and returns what it warped;
-  // nothing when the mirror is edge-on or the eye is on the other side than the maps'.
-  std::optional<ZexelWarpJob> warp(FrameContext& frame, ZexelMirror& m) {
+  // Warps the maps nearest the eye mirrored in `m` into its target; false (nothing warped) when
+  // the mirror is edge-on or the eye is on the other side than the maps'.
+  bool warp(FrameContext& frame, ZexelMirror& m) {
     vec3 point, normal;
     if (!m.maps.captured() || !plane(frame, m.maps.mirror(), frame.view.eye(), point, normal) ||
         glm::dot(normal, m.maps.normal()) <= 0.0f)
-      return std::nullopt;
+      return false;
     const View mirrored = frame.view.mirrored(point, normal);
-    ZexelWarpJob job{&m.maps,
-                     m.maps.select(mirrored.eye(), per_frame_),
-                     0,
-                     splat_,
-                     screenRect(frame.view, frame.gpu.instanceBounds(m.maps.mirror())),
-                     pixel_scale_};
-    // Zexels at most a pixel apart for 1x1 splats, two for larger or magnification-sized ones:
-    // the splats still close the surface.
-    const float spacing_goal = float(pixel_scale_) * (splat_ == pixel_scale_ ? 1.0f : 2.0f);
-    job.level = level_ = m.maps.levelFor(job.chosen.front(), mirrored, spacing_goal);
-    m.target.resize(frame.view.size(), keep_);
-    if (options_.cpu_copies) {  // the CPU warper: the maps were kept on the CPU for it
-      zexels_warped_ += warpOnCpu(job, mirrored, threads_, m.target);
-    } else {
-      warpOnGpu(warp_program_, job, mirrored, m.target);
-      const long width = m.maps.width(job.level);
-      zexels_warped_ += width * width * long(job.chosen.size());
+    ZexelWarpJob job{
+        &m.maps, m.maps.select(mirrored.eye(), per_frame_), splatOptions(frame, m), {}};
+    // The tiles: at the coarsest level the mirror plane allows (no surface behind it lands
+    // closer), at least ZEXEL_TILE_SPAN above level 0; each warps at most that many levels finer
+    // (with the hierarchy off, level 0).
+    const int top = m.maps.levels() - 1;
+    job.splats.tile_level =
+        std::min(top, options_.hierarchy
+                          ? std::max(m.maps.levelFor(job.chosen.front(), mirrored, job.splats.goal),
+                                     shading::ZEXEL_TILE_SPAN)
+                          : shading::ZEXEL_TILE_SPAN);
+    job.splats.finest =
+        options_.hierarchy ? std::max(job.splats.tile_level - shading::ZEXEL_TILE_SPAN, 0) : 0;
+    planZexelJob(job, mirrored);
+    for (const ZexelTilePlan& plan : job.plans) {
+      zexels_warped_ += plan.zexels;
+      tiles_warped_ += plan.tiles;
+      tile_levels_ += plan.level_sum;
     }
-    return job;
+    m.target.resize(frame.view.size(), job.splats, keep_);
+    if (options_.cpu_copies)  // the CPU warper: the maps were kept on the CPU for it
+      warpOnCpu(job, mirrored, threads_, m.target);
+    else
+      warpOnGpu(warp_program_, job, mirrored, m.target);
+    return true;
   }
 
-  // The mirror with the zexels its warp (`job`) left at its pixels.
-  void draw(FrameContext& frame, const ZexelMirror& m, const ZexelWarpJob& job) {
+  // How the zexels of mirror `m` become pixels this frame.
+  ZexelSplatOptions splatOptions(const FrameContext& frame, const ZexelMirror& m) const {
+    ZexelSplatOptions o;
+    o.splat = splat_;
+    o.unit = pixel_scale_;
+    o.rect = screenRect(frame.view, frame.gpu.instanceBounds(m.maps.mirror()));
+    o.lod = options_.hierarchy;
+    // Zexels at most a pixel apart for 1x1 splats, two for larger or magnification-sized ones:
+    // the splats still close the surface.
+    o.goal = float(pixel_scale_) * (splat_ == pixel_scale_ ? 1.0f : 2.0f);
+    o.tolerance = tolerance_;
+    return o;
+  }
+
+  // The mirror with what its warp left around its pixels.
+  void draw(FrameContext& frame, const ZexelMirror& m) {
+    const ZexelSplatOptions splats = splatOptions(frame, m);
     m.target.bind();
-    m.maps.texture().bind(MIRAGE_UNIT_ZEXEL_MAPS);
-    const int second = job.chosen.size() > 1 ? job.chosen[1] : job.chosen[0];
-    mirror_program_.set("u_layers", ivec2(job.chosen[0], second));
-    mirror_program_.set("u_level", job.level);
-    mirror_program_.set("u_width", m.maps.width(job.level));
     mirror_program_.set("u_keep", keep_ ? 1 : 0);
     mirror_program_.set("u_fill", fill_);
+    mirror_program_.set("u_unit", pixel_scale_);
+    mirror_program_.set("u_rect", splats.rect);
+    mirror_program_.set("u_margin", zexelCellMargin(splats));
+    mirror_program_.set("u_reach", zexelSplatReach(splats));
+    mirror_program_.set("u_tolerance", splats.tolerance);
     mirror_program_.use();
     frame.gpu.draw(m.maps.mirror());
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
@@ -180,14 +218,17 @@ class ZexelMethod final : public Method {
   int pixel_scale_, per_frame_, splat_, threads_;
   bool keep_;
   int fill_;
+  float tolerance_;
   gpu::Program warp_program_, pyramid_program_, mirror_program_, base_program_;
   gpu::Buffer counters_;
+  gpu::Handle<gpu::QueryTraits> pixels_query_{newQuery()};
+  bool counted_ = false;  // the query has run
   std::vector<std::unique_ptr<ZexelMirror>> mirrors_;
   std::unique_ptr<FrameTarget> scratch_;
-  int not_planar_ = 0, level_ = 0;
+  int not_planar_ = 0;
   bool captured_ = false;
   uint64_t captured_version_ = 0;
-  long captures_ = 0, zexels_warped_ = 0;
+  long captures_ = 0, zexels_warped_ = 0, tiles_warped_ = 0, tile_levels_ = 0;
   ZexelCurvedReflectors curved_;  // the non-planar reflectors, by inverse warping
 };
 
@@ -199,8 +240,9 @@ MethodEntry zexelMethodEntry() {
   entry.info.description =
       "depth-preserving reflection maps: per planar mirror maps of colour and distance from "
       "reference cameras on the hemisphere behind it, the nearest forward-warped (McMillan) to "
-      "the mirrored eye each frame and splatted, on the GPU or the CPU (forward-mapped planar "
-      "mirror paper); non-planar reflectors inverse-warp a cube map of colour and distance";
+      "the mirrored eye each frame and splatted (surface splatting: the front surface's zexels "
+      "blended), on the GPU or the CPU (forward-mapped planar mirror paper); non-planar "
+      "reflectors inverse-warp a cube map of colour and distance";
   entry.info.max_order = 1;
   entry.info.counters = {"zexel_captures", "zexel_cube_captures"};
   entry.info.frame_stats = {"zexels_warped", "exposed_fraction"};
@@ -227,14 +269,18 @@ MethodEntry zexelMethodEntry() {
                          "exposed mirror pixels show the farthest zexel met within this many "
                          "pixels in eight directions (0: no fill, the paper)"),
       ParamSpec::choice("zexel-warper", {"gpu", "cpu"}, "gpu",
-                        "gpu: a compute shader with an exact depth test; cpu: McMillan's "
-                        "occlusion-compatible order on parallel threads, no z-buffer"),
+                        "gpu: a compute shader; cpu: the same warp on parallel threads (the "
+                        "same pixels whatever the threads)"),
       ParamSpec::integer("zexel-threads", 0, 256, 0, "threads of the CPU warper (0: all cores)"),
       ParamSpec::choice("zexel-lod", {"on", "off"}, "on",
-                        "a mip-map-like hierarchy of the maps, the level chosen so that zexels "
-                        "land at most 1 (1x1 splats) or 2 pixels apart (the paper's future work; "
-                        "off: every zexel "
-                        "of the full map, the paper)")};
+                        "a mip-map-like hierarchy of the maps: each tile of a map warps the "
+                        "coarsest level whose zexels land at most 1 (1x1 splats) or 2 pixels "
+                        "apart on the warped surface (the paper's future work; off: every "
+                        "zexel of the full map, the paper)"),
+      ParamSpec::real("zexel-depth-tolerance", 0.0, 100.0, 2.0,
+                      "zexels landing on a pixel within this many percent of the nearest's "
+                      "distance are blended by their splat weights (surface splatting); 0: the "
+                      "nearest only, the paper")};
   for (const ParamSpec& p : ZexelCurvedReflectors::params()) entry.info.params.push_back(p);
   entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
     return std::make_unique<ZexelMethod>(setup);

@@ -1,22 +1,25 @@
 #include "methods/zexel/zexel_warp_pass.h"
 
-#include <bit>
+#include <algorithm>
 
 #include <tbb/task_arena.h>
 
 #include "methods/zexel/zexel_camera.h"
+#include "methods/zexel/zexel_cpu_warper.h"
 #include "methods/zexel/zexel_shared.h"
 #include "shading/shading.h"
 
 namespace mirage {
 
-void ZexelWarpTarget::resize(ivec2 size, bool history) {
-  const size_t bytes = size_t(size.x) * size_t(size.y) * sizeof(uint32_t);
-  if (size != size_) {
-    keys_ = gpu::Buffer(bytes);
-    indices_ = gpu::Buffer(bytes);
-    history_ = gpu::Texture();
+void ZexelWarpTarget::resize(ivec2 size, const ZexelSplatOptions& splats, bool history) {
+  // Grown, never shrunk: the mirror's rectangle changes every frame.
+  const size_t cells = zexelCellCount(splats);
+  if (cells > cells_count_) {
+    keys_ = gpu::Buffer(cells * sizeof(uint32_t));
+    cells_ = gpu::Buffer(2 * cells * sizeof(uvec4));
+    cells_count_ = cells;
   }
+  if (size != size_) history_ = gpu::Texture();
   if (history && history_.id() == 0) {
     history_ = gpu::Texture::create2D(GL_RGBA32F, size.x, size.y);
     const float unseen[4] = {0.0f, 0.0f, 0.0f, shading::MISS_DISTANCE};
@@ -25,83 +28,103 @@ void ZexelWarpTarget::resize(ivec2 size, bool history) {
   size_ = size;
 }
 
-void ZexelWarpTarget::clear() const {
+void ZexelWarpTarget::clear(size_t cells) const {
   const GLuint empty = MIRAGE_ZEXEL_EMPTY;
-  for (const gpu::Buffer* b : {&keys_, &indices_})
-    glClearNamedBufferData(b->id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty);
+  glClearNamedBufferSubData(keys_.id(), GL_R32UI, 0, GLsizeiptr(cells * sizeof(uint32_t)),
+                            GL_RED_INTEGER, GL_UNSIGNED_INT, &empty);
 }
 
 void ZexelWarpTarget::bind() const {
   keys_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_ZEXEL_KEYS);
-  indices_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_ZEXEL_INDICES);
+  cells_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_ZEXEL_CELLS);
+  if (tiles_.id() != 0) tiles_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_ZEXEL_TILES);
   if (history_.id() != 0)
     glBindImageTexture(MIRAGE_IMAGE_ZEXEL_HISTORY, history_.id(), 0, GL_FALSE, 0, GL_READ_WRITE,
                        GL_RGBA32F);
 }
 
+namespace {
+
+WarpCamera outputCamera(const View& output) {
+  return {zexelPixelMatrix(output, output.nearPlane()), output.eye()};
+}
+
+std::vector<ZexelWarpSource> sources(const ZexelWarpJob& job) {
+  std::vector<ZexelWarpSource> s;
+  for (int map : job.chosen)
+    s.push_back({&job.maps->cpuMap(map, 0), job.maps->levels(), job.maps->width(0),
+                 job.maps->warpCamera(map, 0)});
+  return s;
+}
+
+}  // namespace
+
+void planZexelJob(ZexelWarpJob& job, const View& output) {
+  job.plans.clear();
+  for (const ZexelWarpSource& s : sources(job))
+    job.plans.push_back(planZexelTiles(s, outputCamera(output), job.splats));
+}
+
 void warpOnGpu(const gpu::Program& program, const ZexelWarpJob& job, const View& output,
                ZexelWarpTarget& target) {
-  target.clear();
+  const ZexelSplatOptions& s = job.splats;
+  // Every list of tiles in one buffer: slot after slot, level after level.
+  std::vector<ZexelTileWord> words;
+  for (const ZexelTilePlan& plan : job.plans)
+    for (const auto& level : plan.by_level) words.insert(words.end(), level.begin(), level.end());
+  if (!words.empty()) target.tiles().upload(std::span<const ZexelTileWord>(words));
+  target.clear(zexelCellCount(s));
   target.bind();
   job.maps->texture().bind(MIRAGE_UNIT_ZEXEL_MAPS);
-  const int width = job.maps->width(job.level);
-  program.set("u_level", job.level);
-  program.set("u_width", width);
-  program.set("u_po_inverse", mat4(glm::inverse(zexelPixelMatrix(output, output.nearPlane()))));
+  program.set("u_width", job.maps->width(0));
+  program.set("u_margin", zexelCellMargin(s));
+  program.set("u_po_inverse", mat4(glm::inverse(outputCamera(output).p)));
   program.set("u_co", output.eye());
-  program.set("u_size", output.size());
-  program.set("u_splat", job.splat);
-  program.set("u_pixel_scale", job.pixel_scale);
-  program.set("u_rect", job.rect);
+  program.set("u_splat", s.splat);
+  program.set("u_pixel_scale", s.unit);
+  program.set("u_rect", s.rect);
   program.use();
-  const GLuint groups = GLuint((width + 7) / 8);
   for (int pass = 0; pass < 2; ++pass) {
     program.set("u_pass", pass);
+    int first = 0;
     for (size_t slot = 0; slot < job.chosen.size(); ++slot) {
-      const WarpCamera in = job.maps->warpCamera(job.chosen[slot], job.level);
-      program.set("u_slot", int(slot));
+      const ZexelTilePlan& plan = job.plans[slot];
+      const WarpCamera in = job.maps->warpCamera(job.chosen[slot], 0);
       program.set("u_layer", job.chosen[slot]);
       program.set("u_pi", mat4(in.p));
       program.set("u_ci", in.c);
-      glDispatchCompute(groups, groups, 1);
+      for (size_t l = 0; l < plan.by_level.size(); ++l) {
+        const int count = int(plan.by_level[l].size()), level = plan.finest + int(l);
+        const int span = plan.tile_level - level;
+        if (count > 0) {
+          program.set("u_level", level);
+          program.set("u_span", span);
+          program.set("u_first", first);
+          program.set("u_count", count);
+          // An invocation per zexel, in rows of at most 65535 groups.
+          const long groups =
+              ((long(count) << (2 * span)) + MIRAGE_ZEXEL_GROUP - 1) / MIRAGE_ZEXEL_GROUP;
+          const long row = std::min(groups, 65535L);
+          glDispatchCompute(GLuint(row), GLuint((groups + row - 1) / row), 1);
+        }
+        first += count;
+      }
     }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
 }
 
-long warpOnCpu(const ZexelWarpJob& job, const View& output, int threads, ZexelWarpTarget& target) {
-  const ivec2 size = output.size();
-  const WarpCamera out{zexelPixelMatrix(output, output.nearPlane()), output.eye()};
-  std::vector<uint32_t> keys(size_t(size.x) * size_t(size.y), MIRAGE_ZEXEL_EMPTY);
-  std::vector<uint32_t> words(keys.size(), MIRAGE_ZEXEL_EMPTY);
-  long warped = 0;
+void warpOnCpu(const ZexelWarpJob& job, const View& output, int threads, ZexelWarpTarget& target) {
+  ZexelCells cells;
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-  for (size_t slot = 0; slot < job.chosen.size(); ++slot) {
-    const ZexelMap2D& map = job.maps->cpuMap(job.chosen[slot], job.level);
-    const WarpCamera in = job.maps->warpCamera(job.chosen[slot], job.level);
-    std::vector<uint32_t> shown;
-    arena.execute([&] {
-      shown = warpOcclusionCompatible(map, in, out, size,
-                                      {.splat = job.splat,
-                                       .parallel = threads != 1,
-                                       .rect = job.rect,
-                                       .unit = job.pixel_scale});
-    });
-    warped += long(map.width) * map.height;
-    // The second map fills what the first left and wins where it saw something nearer.
-    for (size_t p = 0; p < shown.size(); ++p) {
-      if (shown[p] == kNoZexel) continue;
-      const uint32_t key = std::bit_cast<uint32_t>(zexelDistance(map, in, shown[p], out.c));
-      if (key < keys[p]) {
-        keys[p] = key;
-        words[p] = shading::zexel_index_word(int(slot), shown[p]);
-      }
-    }
-  }
+  arena.execute([&] {
+    cells = warpZexels(sources(job), job.plans, outputCamera(output), job.splats, threads != 1);
+  });
+  std::vector<uint32_t> keys(cells.size() / 2);
+  for (size_t i = 0; i < keys.size(); ++i) keys[i] = cells[2 * i].x;
   target.keys().upload(std::span<const uint32_t>(keys));
-  target.indices().upload(std::span<const uint32_t>(words));
+  target.cells().upload(std::span<const uvec4>(cells));
   target.bind();
-  return warped;
 }
 
 }  // namespace mirage

@@ -1,6 +1,6 @@
 // The per-frame warp of a mirror's chosen maps into the image seen from the mirrored eye, by the
-// GPU warper (zexel_warp.comp) or the CPU one (zexel_cpu_warper.h), into the same per-pixel words
-// the mirror's shader reads (zexel_shared.h): the nearest landed distance and the zexel shown.
+// GPU warper (zexel_warp.comp) or the CPU one (zexel_cpu_warper.h), into the same cells the
+// mirror's shader gathers from (zexel_shared.h, zexel_splat_shared.h).
 #pragma once
 
 #include <vector>
@@ -8,43 +8,50 @@
 #include "gpu/buffer.h"
 #include "gpu/program.h"
 #include "methods/zexel/zexel_maps.h"
+#include "methods/zexel/zexel_tiles.h"
 
 namespace mirage {
 
-// What one mirror's warp needs: the maps, the ones chosen (one or two: slots 0 and 1), the level.
+// What one mirror's warp needs: the maps, the ones chosen (one or two: slots 0 and 1), how their
+// tiles and splats go (ZexelSplatOptions: the tiles' level and the finest they may warp, splats,
+// the mirror's pixels, the spacing goal, the depth tolerance), and each chosen map's tile plan.
 struct ZexelWarpJob {
   const ZexelMirrorMaps* maps = nullptr;
   std::vector<int> chosen;
-  int level = 0;
-  int splat = 3;        // 0: from the warp's magnification
-  ivec4 rect{0};        // the mirror's pixels (window coordinates) lie in [xy, zw)
-  int pixel_scale = 1;  // frame pixels per output pixel along a side (--ssaa)
+  ZexelSplatOptions splats;
+  std::vector<ZexelTilePlan> plans;
 };
 
-// A mirror's per-pixel words, frame-sized, and its last image (the no-clear option).
+// Plans the tiles of the job's chosen maps for `output` (zexel_tiles.h).
+void planZexelJob(ZexelWarpJob& job, const View& output);
+
+// A mirror's cells (zexelCellCount: their keys apart, the rest), the tiles of its warp, and its
+// last image (the no-clear option, frame-sized).
 class ZexelWarpTarget {
  public:
-  void resize(ivec2 size, bool history);
+  void resize(ivec2 size, const ZexelSplatOptions& splats, bool history);
   ivec2 size() const { return size_; }
-  // Both words of every pixel to MIRAGE_ZEXEL_EMPTY.
-  void clear() const;
+  // The first `cells` cells empty (their keys).
+  void clear(size_t cells) const;
   void bind() const;  // the buffers at their bindings and the history image
   gpu::Buffer& keys() { return keys_; }
-  gpu::Buffer& indices() { return indices_; }
+  gpu::Buffer& cells() { return cells_; }
+  // The tiles' words of a plan, uploaded.
+  gpu::Buffer& tiles() { return tiles_; }
 
  private:
   ivec2 size_{0};
-  gpu::Buffer keys_, indices_;
+  size_t cells_count_ = 0;
+  gpu::Buffer keys_, cells_, tiles_;
   gpu::Texture history_;
 };
 
-// The GPU warper: two dispatches per chosen map (nearest distances, then indices).
+// The GPU warper: per pass (nearest distances, then the sums), chosen map and level of its plan,
+// one dispatch of an invocation per zexel.
 void warpOnGpu(const gpu::Program& program, const ZexelWarpJob& job, const View& output,
                ZexelWarpTarget& target);
 
-// The CPU warper: each chosen map in McMillan's occlusion-compatible order (the sheets on up to
-// `threads` threads; 0: all), the two maps merged by distance, uploaded. Returns the zexels
-// warped.
-long warpOnCpu(const ZexelWarpJob& job, const View& output, int threads, ZexelWarpTarget& target);
+// The CPU warper on up to `threads` threads (0: all), uploaded into the same cells.
+void warpOnCpu(const ZexelWarpJob& job, const View& output, int threads, ZexelWarpTarget& target);
 
 }  // namespace mirage
