@@ -178,6 +178,16 @@ std::vector<Hostile> hostileInputs() {
        },
        render + "{}",
        {"indices.gltf"}},
+      {"glTF buffer whose uri names a folder",
+       "folder-buffer.gltf",
+       [] {
+         return replaceAll(gltfWith("3"),
+                           "data:application/octet-stream;base64,"
+                           "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA",
+                           "folder.ply");
+       },
+       render + "{}",
+       {"folder-buffer.gltf", "folder.ply"}},
       {"GLB cut short",
        "cut.glb",
        [] { return std::string("glTF\x02\0\0\0\x00\x10\0\0", 12); },
