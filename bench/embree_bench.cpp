@@ -25,6 +25,7 @@ RTCIntersectContext makeContext(bool coherent) {
 void finish(benchmark::State& state, size_t rays, int threads) {
   state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(rays));
   state.counters["threads"] = threads;
+  state.counters["rays"] = double(rays);  // per iteration (docs/benchmarks.md quotes it)
 }
 
 // --- single rays ---

@@ -11,6 +11,7 @@
 // shows past the last reflection order); anything else is diffuse with baseColorFactor times
 // baseColorTexture.
 #include <cstring>
+#include <filesystem>
 #include <numeric>
 #include <optional>
 
@@ -19,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/memory_cap.h"
 #include "scene/gltf_accessor.h"
 #include "scene/loader_support.h"
 #include "scene/model_loader.h"
@@ -54,6 +56,39 @@ std::vector<std::string> requiredExtensions(const std::string& bytes) {
     for (const auto& e : doc["extensionsRequired"])
       if (e.is_string()) out.push_back(e.get<std::string>());
   return out;
+}
+
+// tinygltf's own file callbacks open a buffer's or an image's uri with an ifstream and allocate
+// the size seekg/tellg report: a uri naming a folder opens, and its "size" (LLONG_MAX on ext4)
+// threw std::bad_alloc (found by fuzzing); nor do they know --max-memory. These read regular files
+// only, after holding their size to the limits (user_data: the LoadLimits).
+bool isRegularFile(const std::string& path, void*) {
+  std::error_code ec;
+  return std::filesystem::is_regular_file(path, ec);
+}
+
+std::string unexpandedPath(const std::string& path, void*) {
+  return path;
+}
+
+bool readExternalFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                      void* limits) {
+  std::error_code ec;
+  const uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec || !std::filesystem::is_regular_file(path, ec)) {
+    *err += path + ": not a readable file";
+    return false;
+  }
+  try {  // tinygltf adds the message to its own, which names the glTF file's field
+    checkAllocation(path, "reading the file", size,
+                    static_cast<const LoadLimits*>(limits)->max_bytes);
+    const std::string bytes = loader::readWholeFile(path);
+    out->assign(bytes.begin(), bytes.end());
+    return true;
+  } catch (const InputError& e) {
+    *err += e.what();
+    return false;
+  }
 }
 
 std::string trimmed(std::string s) {
@@ -352,6 +387,8 @@ LoadedModel readGltf(const std::string& path, const std::string& bytes, const Lo
   tinygltf::Model model;
   tinygltf::TinyGLTF ctx;
   ctx.SetImageLoader(&keepEncodedImage, nullptr);
+  ctx.SetFsCallbacks({&isRegularFile, &unexpandedPath, &readExternalFile, nullptr,
+                      const_cast<LoadLimits*>(&limits)});
   std::string err, warn, base = loader::folderOf(path);
   bool ok = bytes.starts_with("glTF")
                 ? ctx.LoadBinaryFromMemory(&model, &err, &warn,

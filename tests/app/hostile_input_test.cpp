@@ -1,7 +1,8 @@
 // Hostile and broken inputs through the tool itself: every one exits 2 with one message naming
 // the file and what is wrong, quickly (nothing huge allocated, nothing hangs). The run writes its
-// table — input, exit code, message — to test-artifacts/hostile-inputs.md, the table of
-// docs/reliability.md.
+// rows — input, command, exit code, seconds, message — to test-artifacts/hostile-inputs.json, the
+// raw figures of docs/reliability.md's table (`scripts/docs-figures --only hostile-inputs`
+// formats them).
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -10,6 +11,8 @@
 #include <functional>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "core/atomic_file.h"
 #include "core/image.h"
@@ -175,6 +178,16 @@ std::vector<Hostile> hostileInputs() {
        },
        render + "{}",
        {"indices.gltf"}},
+      {"glTF buffer whose uri names a folder",
+       "folder-buffer.gltf",
+       [] {
+         return replaceAll(gltfWith("3"),
+                           "data:application/octet-stream;base64,"
+                           "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA",
+                           "folder.ply");
+       },
+       render + "{}",
+       {"folder-buffer.gltf", "folder.ply"}},
       {"GLB cut short",
        "cut.glb",
        [] { return std::string("glTF\x02\0\0\0\x00\x10\0\0", 12); },
@@ -305,8 +318,8 @@ std::vector<Hostile> hostileInputs() {
   };
 }
 
-// The message without the test folder's path, first line only, for the table.
-std::string tableMessage(std::string out, const std::string& dir) {
+// The message without the test folder's path, first line only, bytes past ASCII escaped.
+std::string errorLine(std::string out, const std::string& dir) {
   out = replaceAll(out, dir + "/", "");
   const size_t error = out.rfind("mirage: error: ");
   if (error != std::string::npos) out = out.substr(error);
@@ -314,7 +327,7 @@ std::string tableMessage(std::string out, const std::string& dir) {
   std::string printable;  // the input's own bytes may be echoed: keep the table UTF-8
   for (unsigned char c : out)
     printable += c < 0x80 ? std::string(1, char(c)) : fmt::format("\\x{:02x}", c);
-  return replaceAll(printable, "|", "\\|");
+  return printable;
 }
 
 TEST(HostileInputs, EachExitsTwoWithAMessageNamingWhatIsWrong) {
@@ -322,8 +335,7 @@ TEST(HostileInputs, EachExitsTwoWithAMessageNamingWhatIsWrong) {
   const fs::path dir = testTempDir("hostile");
   fs::create_directories(dir / "folder.ply");
   writeText(dir / "box.ply", boxPlyText());
-  std::string table =
-      "| input | command | exit | seconds | message |\n| --- | --- | ---: | ---: | --- |\n";
+  nlohmann::json rows = nlohmann::json::array();
   for (const Hostile& h : hostileInputs()) {
     std::string args = h.args;
     if (!h.file.empty()) {
@@ -351,11 +363,14 @@ TEST(HostileInputs, EachExitsTwoWithAMessageNamingWhatIsWrong) {
                                                                      << run.output;
     EXPECT_FALSE(fs::exists(dir / "out.png")) << h.what;
     EXPECT_FALSE(fs::exists(dir / "report")) << h.what;  // compare's folder: not even made
-    table += fmt::format("| {} | `{}` | {} | {:.2f} | {} |\n", h.what, replaceAll(args, "|", "\\|"),
-                         run.code, seconds, tableMessage(run.output, dir.string()));
+    rows.push_back({{"input", h.what},
+                    {"command", args},
+                    {"exit", run.code},
+                    {"seconds", seconds},
+                    {"message", errorLine(run.output, dir.string())}});
   }
   fs::create_directories(MIRAGE_TEST_ARTIFACTS);
-  writeFileAtomic(std::string(MIRAGE_TEST_ARTIFACTS) + "/hostile-inputs.md", table);
+  writeFileAtomic(std::string(MIRAGE_TEST_ARTIFACTS) + "/hostile-inputs.json", rows.dump(1) + "\n");
 }
 
 }  // namespace

@@ -87,6 +87,25 @@ TEST(GltfErrors, MissingExternalFiles) {
   expectInputError([&] { loadGltf(path); }, {path, "image 1", "nowhere.png"});
 }
 
+// A uri naming a folder (found by fuzzing: tinygltf opened it and allocated its "size", LLONG_MAX
+// on ext4, a bad_alloc) and a buffer past --max-memory are refused before reading.
+TEST(GltfErrors, ExternalFilesMustBeRegularFilesWithinTheMemoryCap) {
+  TempDir dir;
+  std::filesystem::create_directories(dir.file("folder.bin"));
+  test::QuadScene s = test::quadScene(dir);
+  s.doc["buffers"] = {{{"byteLength", s.buffer.data().size()}, {"uri", "folder.bin"}}};
+  std::string path = dir.write("folder.gltf", s.doc.dump());
+  expectInputError([&] { loadGltf(path); }, {path, "folder.bin"});
+  s = test::quadScene(dir);
+  s.doc["buffers"] = {{{"byteLength", s.buffer.data().size()}, {"uri", "quad.bin"}}};
+  dir.write("quad.bin", s.buffer.data());
+  path = dir.write("external.gltf", s.doc.dump());
+  EXPECT_EQ(loadGltf(path).meshes.size(), 3u);  // the same buffer as a file is read
+  LoadLimits limits;
+  limits.max_bytes = s.buffer.data().size() - 1;
+  expectInputError([&] { loadGltf(path, limits); }, {path, "quad.bin", "--max-memory"});
+}
+
 TEST(GltfErrors, EmptyForeignAndTruncatedFiles) {
   TempDir dir;
   std::string empty = dir.write("empty.gltf", "");
