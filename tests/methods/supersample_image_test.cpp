@@ -108,8 +108,8 @@ std::map<std::string, double> statsAt(const Scene& scene, const std::string& met
 
 // A method does at N x N what it does at native resolution, only sampled more finely: its
 // decisions made in pixels are made in output pixels. Zexel's map levels (per tile, zexels at
-// most 2 output pixels apart; their mean), hybrid's level of detail (points per output pixel) and SSR's step budget (two
-// cells more for each pyramid level that N adds) come out the same at
+// most 2 output pixels apart; their mean), hybrid's level of detail (points per output pixel) and
+// SSR's step budget (two cells more for each pyramid level that N adds) come out the same at
 // --ssaa 1, 2 and 4. Left in frame pixels they would not: the level would drop by one per
 // doubling, the points projected grow 4x, and SSR's rays run out of steps (spheres9, 8 steps: 56%
 // of the rays at --ssaa 1, 89% at --ssaa 4 with the budget unscaled).

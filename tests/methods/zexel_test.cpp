@@ -226,7 +226,7 @@ TEST(ZexelCpuWarper, CellsHoldTheNearestZexelLandingThere) {
         warpZexels({{w.levels.data(), int(w.levels.size()), 200, w.in}}, out, o, false);
     // By brute force: each cell's nearest landed distance.
     const int margin = zexelCellMargin(o);
-    std::vector<float> nearest(cells.size() / 2, std::numeric_limits<float>::infinity());
+    std::vector<float> nearest(cells.size(), std::numeric_limits<float>::infinity());
     for (int y = 0; y < 200; ++y)
       for (int x = 0; x < 200; ++x) {
         const vec4 l = landingOf(w.map, w.in, out, {x, y});
@@ -240,7 +240,7 @@ TEST(ZexelCpuWarper, CellsHoldTheNearestZexelLandingThere) {
       }
     size_t filled = 0;
     for (size_t i = 0; i < nearest.size(); ++i) {
-      const uint32_t key = cells[2 * i].x;
+      const uint32_t key = cells[i].x;
       if (std::isinf(nearest[i])) {
         EXPECT_EQ(key, kNoZexel) << i;
         continue;
@@ -299,12 +299,10 @@ TEST(ZexelBlend, FrontSurfaceSplatsBlendByWeightAndFartherOnesStayOut) {
   const vec2 centre = vec2(pixel) + 0.5f;
   const float sigma = 0.8f, falloff = 0.5f / (sigma * sigma);
   auto put = [&](ZexelCells& cells, ivec2 at, vec2 offset, float distance, vec3 color) {
-    const size_t i = size_t(shading::zexel_cell_index(at, o.rect, margin));
-    const vec2 landed = vec2(at) + offset;
-    cells[2 * i] = shading::zexel_cell_first(std::bit_cast<uint32_t>(distance), landed, sigma);
-    cells[2 * i + 1] = shading::zexel_cell_second(color, landed, 3, at);
+    cells[size_t(shading::zexel_cell_index(at, o.rect, margin))] =
+        shading::zexel_cell(std::bit_cast<uint32_t>(distance), vec2(at) + offset, 3, color, sigma);
   };
-  auto empty = [&] { return ZexelCells(2 * zexelCellCount(o), uvec4(kNoZexel, 0u, 0u, 0u)); };
+  auto empty = [&] { return ZexelCells(zexelCellCount(o), uvec4(kNoZexel, 0u, 0u, 0u)); };
   const vec3 red(1.0f, 0.0f, 0.0f), green(0.0f, 1.0f, 0.0f), blue(0.0f, 0.0f, 1.0f);
   const float near = 2.0f, within = near * 1.015f, beyond = near * 1.5f;
   // Two surfaces within the tolerance, one landed 0.3 px from the pixel's centre and one 0.9 px

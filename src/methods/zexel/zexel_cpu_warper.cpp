@@ -19,7 +19,7 @@ namespace {
 struct Landed {
   int cell = -1;
   uint32_t key = 0;
-  uvec4 first{0u}, second{0u};
+  uvec4 words{0u};
 };
 
 // A tile of a plan: its map, its level, its word and its first zexel's number in the warp (the
@@ -60,8 +60,7 @@ Landed land(const ZexelWarpSource& source, const PlannedTile& t, int k, const ma
   l.cell = shading::zexel_cell_index(ivec2(glm::floor(landed)), r, margin);
   l.key = std::bit_cast<uint32_t>(distance);
   const float sigma = shading::zexel_kernel_sigma(std::bit_cast<float>(t.word->spacing_bits));
-  l.first = shading::zexel_cell_first(l.key, landed, sigma);
-  l.second = shading::zexel_cell_second(vec3(zexel), landed, side, ivec2(glm::floor(landed)));
+  l.words = shading::zexel_cell(l.key, landed, side, vec3(zexel), sigma);
   return l;
 }
 
@@ -83,9 +82,9 @@ thread_local const mirage::ZexelCells* g_cells = nullptr;
 thread_local ivec4 g_rect{0};
 thread_local int g_margin = 0;
 }  // namespace
-inline uvec4 zexel_cell_at(ivec2 pixel, int word) {
+inline uvec4 zexel_cell_at(ivec2 pixel) {
   const int at = zexel_cell_index(pixel, g_rect, g_margin);
-  return at < 0 ? uvec4(MIRAGE_ZEXEL_EMPTY) : (*g_cells)[2 * size_t(at) + size_t(word)];
+  return at < 0 ? uvec4(MIRAGE_ZEXEL_EMPTY) : (*g_cells)[size_t(at)];
 }
 }  // namespace mirage::shading
 
@@ -97,11 +96,16 @@ vec4 gatherZexels(const ZexelCells& cells, const ZexelSplatOptions& options, ive
   shading::g_cells = &cells;
   shading::g_rect = options.rect;
   shading::g_margin = zexelCellMargin(options);
-  return shading::zexel_gather(pixel, zexelSplatReach(options), options.tolerance);
+  return shading::zexel_gather(pixel, zexelSplatReach(options), zexelSplatsAllCover(options),
+                               options.tolerance);
 }
 
 int zexelSplatReach(const ZexelSplatOptions& options) {
   return (options.splat > 0 ? options.splat : kMaxAutoSplat * options.unit) / 2;
+}
+
+bool zexelSplatsAllCover(const ZexelSplatOptions& options) {
+  return options.splat > 0 && options.splat % 2 == 1;
 }
 
 int zexelCellMargin(const ZexelSplatOptions& options) {
@@ -149,11 +153,10 @@ ZexelCells warpZexels(const std::vector<ZexelWarpSource>& sources,
   };
   // Pass 0: each cell's nearest (distance, number); pass 1: that zexel's words.
   forEachZexel([&](const Landed& l, uint64_t key) { keepNearest(nearest[size_t(l.cell)], key); });
-  ZexelCells cells(2 * count, uvec4(MIRAGE_ZEXEL_EMPTY, 0u, 0u, 0u));
+  ZexelCells cells(count, uvec4(MIRAGE_ZEXEL_EMPTY, 0u, 0u, 0u));
   forEachZexel([&](const Landed& l, uint64_t key) {
-    if (nearest[size_t(l.cell)].load(std::memory_order_relaxed) != key) return;
-    cells[2 * size_t(l.cell)] = l.first;
-    cells[2 * size_t(l.cell) + 1] = l.second;
+    if (nearest[size_t(l.cell)].load(std::memory_order_relaxed) == key)
+      cells[size_t(l.cell)] = l.words;
   });
   return cells;
 }

@@ -21,14 +21,16 @@ namespace mirage {
 
 // The warp's cells: per pixel of the mirror's rectangle (options.rect, within the image) and a
 // margin of zexelCellMargin pixels around it, rows from the bottom (zexel_cell_index), the
-// nearest zexel that landed there, two words (zexel_cell_first and _second; the first's x
-// MIRAGE_ZEXEL_EMPTY where none did) — the words the GPU warper leaves.
+// nearest zexel that landed there (zexel_cell; x MIRAGE_ZEXEL_EMPTY where none did) — the words
+// the GPU warper leaves.
 using ZexelCells = std::vector<uvec4>;
 
 // How far a splat reaches from the pixel it landed in (the largest side / 2); the cells kept
 // around the mirror's rectangle (that, and at least an output pixel: the fill looks there); and
-// how many cells (of two words each).
+// how many cells.
 int zexelSplatReach(const ZexelSplatOptions& options);
+// Whether every splat is 2 reach + 1 wide (a fixed odd side): each within the reach covers.
+bool zexelSplatsAllCover(const ZexelSplatOptions& options);
 int zexelCellMargin(const ZexelSplatOptions& options);
 size_t zexelCellCount(const ZexelSplatOptions& options);
 

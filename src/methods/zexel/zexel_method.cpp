@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <string>
 
 #include "core/error.h"
 #include "methods/zexel/zexel_cpu_warper.h"
@@ -46,6 +47,17 @@ GLuint newQuery() {
   return id;
 }
 
+// The mirror's program, its gather's reach a constant (zexel_mirror.frag).
+gpu::Program mirrorProgram(int splat, int pixel_scale) {
+  ZexelSplatOptions o;
+  o.splat = splat;
+  o.unit = pixel_scale;
+  return gpu::Program::graphics(
+      "render/shaders/scene.vert", "methods/zexel/zexel_mirror.frag",
+      {"ZEXEL_REACH " + std::to_string(zexelSplatReach(o)),
+       std::string("ZEXEL_ALL_COVER ") + (zexelSplatsAllCover(o) ? "1" : "0")});
+}
+
 // A planar mirror: its maps and this frame's warp of them.
 struct ZexelMirror {
   ZexelMirrorMaps maps;
@@ -67,8 +79,7 @@ class ZexelMethod final : public Method {
         tolerance_(float(setup.params.real("zexel-depth-tolerance")) / 100.0f),
         warp_program_(gpu::Program::compute("methods/zexel/zexel_warp.comp")),
         pyramid_program_(gpu::Program::compute("methods/zexel/zexel_pyramid.comp")),
-        mirror_program_(
-            gpu::Program::graphics("render/shaders/scene.vert", "methods/zexel/zexel_mirror.frag")),
+        mirror_program_(mirrorProgram(splat_, pixel_scale_)),
         base_program_(
             gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")),
         counters_(MIRAGE_ZEXEL_COUNTERS * sizeof(uint32_t)),
@@ -206,7 +217,6 @@ class ZexelMethod final : public Method {
     mirror_program_.set("u_unit", pixel_scale_);
     mirror_program_.set("u_rect", splats.rect);
     mirror_program_.set("u_margin", zexelCellMargin(splats));
-    mirror_program_.set("u_reach", zexelSplatReach(splats));
     mirror_program_.set("u_tolerance", splats.tolerance);
     mirror_program_.use();
     frame.gpu.draw(m.maps.mirror());

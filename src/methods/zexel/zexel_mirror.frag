@@ -15,7 +15,7 @@ layout(early_fragment_tests) in;
 
 layout(std430, binding = MIRAGE_BIND_ZEXEL_KEYS) readonly buffer KeyBlock { uint keys[]; };
 layout(std430, binding = MIRAGE_BIND_ZEXEL_CELLS) readonly buffer CellBlock {
-  uvec4 cells[];  // two words a cell (the first's x: in `keys`)
+  uvec4 cells[];  // a cell's words (x: in `keys`)
 };
 layout(std430, binding = MIRAGE_BIND_ZEXEL_COUNTERS) buffer CounterBlock { uint counters[]; };
 layout(binding = MIRAGE_IMAGE_ZEXEL_HISTORY, rgba32f) uniform coherent image2D u_history;
@@ -25,7 +25,9 @@ uniform int u_fill;         // the fill's search radius in output pixels (0: no 
 uniform int u_unit;         // frame pixels per output pixel along a side (--ssaa)
 uniform ivec4 u_rect;       // the mirror's pixels lie in [xy, zw)
 uniform int u_margin;       // cells kept around them: at least the splats' reach and u_unit
-uniform int u_reach;        // how far a splat reaches from the pixel it landed in
+// ZEXEL_REACH (defined when the program is built): how far a splat reaches from the pixel it
+// landed in; ZEXEL_ALL_COVER: 1 when every splat is 2 ZEXEL_REACH + 1 wide. Constants, so that
+// the gather's loops unroll and the coverage test goes where it cannot fail.
 uniform float u_tolerance;  // the blend's relative depth tolerance
 
 // No bounds to check: every cell within u_margin of a pixel of u_rect is kept (the gather reads
@@ -35,10 +37,9 @@ uint zexel_cell_index_at(ivec2 pixel) {
   return uint(at.y * (u_rect.z - u_rect.x + 2 * u_margin) + at.x);
 }
 
-uvec4 zexel_cell_at(ivec2 pixel, int word) {
+uvec4 zexel_cell_at(ivec2 pixel) {
   uint at = zexel_cell_index_at(pixel);
-  if (word == 1) return cells[2u * at + 1u];
-  return uvec4(keys[at], cells[2u * at].yzw);
+  return uvec4(keys[at], cells[at].yzw);
 }
 
 #include "methods/zexel/zexel_gather_shared.h"
@@ -54,18 +55,20 @@ vec4 farthest_neighbour(ivec2 pixel) {
     for (int r = 1; r <= u_fill; ++r) {
       ivec2 q = pixel + r * u_unit * steps[d];
       if (any(lessThan(q, u_rect.xy)) || any(greaterThanEqual(q, u_rect.zw))) break;
-      // The nearest zexel landed in the block: what the walk meets there.
-      uint key = MIRAGE_ZEXEL_EMPTY;
+      // The nearest zexel landed in the block: what the walk meets there (at one sample a pixel
+      // the block is the pixel: no loop, which costs the shader even when it runs once).
+      uint key = keys[zexel_cell_index_at(q)];
       ivec2 at = q;
-      for (int y = 0; y < u_unit; ++y)
-        for (int x = 0; x < u_unit; ++x) {
-          ivec2 c = q + ivec2(x, y) - ivec2(u_unit / 2);
-          uint k = keys[zexel_cell_index_at(c)];
-          if (k < key) {
-            key = k;
-            at = c;
+      if (u_unit > 1)
+        for (int y = 0; y < u_unit; ++y)
+          for (int x = 0; x < u_unit; ++x) {
+            ivec2 c = q + ivec2(x, y) - ivec2(u_unit / 2);
+            uint k = keys[zexel_cell_index_at(c)];
+            if (k < key) {
+              key = k;
+              at = c;
+            }
           }
-        }
       if (key == MIRAGE_ZEXEL_EMPTY) continue;
       if (key > best_key) {
         best_key = key;
@@ -74,12 +77,12 @@ vec4 farthest_neighbour(ivec2 pixel) {
       break;
     }
   if (best.x < 0) return vec4(0.0f, 0.0f, 0.0f, -1.0f);
-  return vec4(zexel_cell_color(zexel_cell_at(best, 1)), uintBitsToFloat(best_key));
+  return vec4(zexel_cell_color(zexel_cell_at(best)), uintBitsToFloat(best_key));
 }
 
 vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflector) {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  vec4 seen = zexel_gather(pixel, u_reach, u_tolerance);
+  vec4 seen = zexel_gather(pixel, ZEXEL_REACH, ZEXEL_ALL_COVER != 0, u_tolerance);
   if (seen.a < 0.0f) {
     atomicAdd(counters[MIRAGE_ZEXEL_COUNT_EXPOSED], 1u);
     if (u_fill > 0) seen = farthest_neighbour(pixel);

@@ -26,6 +26,10 @@
 
 #include "shading/glsl_compat.h"
 
+#ifndef MIRAGE_GLSL
+#include <glm/gtc/packing.hpp>  // packHalf2x16, as GLSL has it
+#endif
+
 SHARED_BEGIN
 
 // A tile warps at most this many levels below its own (its loop over zexels stays within 8 x 8).
@@ -150,38 +154,43 @@ SHARED_FN bool zexel_in_front(float distance, float nearest, float tolerance) {
   return distance <= nearest * (1.0f + tolerance);
 }
 
-// A cell is two words, laid out so that the gather does little more than read them. The first:
-// x, the nearest landed distance's bits (what the warp's atomicMin keeps); y, z, where it landed
-// (floats); w, its kernel's falloff 1 / (2 σ²). The second: its colour (floats) and its splat —
-// the first pixel it covers relative to the cell (8 + 8 bits, offset by 128) and its side (the
-// bits from 16).
-SHARED_FN uvec4 zexel_cell_first(uint key, vec2 landed, float sigma) {
-  return uvec4(key, floatBitsToUint(landed.x), floatBitsToUint(landed.y),
-               floatBitsToUint(0.5f / (sigma * sigma)));
+// A cell's words, as few as the gather can read (each costs it): x, the nearest landed
+// distance's bits (what the warp's atomicMin keeps); y, where it landed within the pixel (12 + 12
+// bits) and its splat's side − 1 (8 bits); z, its colour's red and green; w, its blue and its
+// kernel's falloff 1 / (2 σ²) (half floats).
+SHARED_CONST float ZEXEL_CELL_STEPS = 4096.0f;
+
+SHARED_FN uvec4 zexel_cell(uint key, vec2 landed, int side, vec3 color, float sigma) {
+  vec2 at = clamp(floor((landed - floor(landed)) * ZEXEL_CELL_STEPS), vec2(0.0f),
+                  vec2(ZEXEL_CELL_STEPS - 1.0f));
+  uint where = uint(at.x) | (uint(at.y) << 12) | (uint(clamp(side - 1, 0, 255)) << 24);
+  vec3 c = min(color, vec3(65000.0f));  // a half float's range
+  return uvec4(key, where, packHalf2x16(vec2(c.x, c.y)),
+               packHalf2x16(vec2(c.z, 0.5f / (sigma * sigma))));
 }
 
-SHARED_FN uvec4 zexel_cell_second(vec3 color, vec2 landed, int side, ivec2 cell) {
-  ivec2 first = zexel_splat_origin(landed, side) - cell + ivec2(128);
-  return uvec4(floatBitsToUint(color.x), floatBitsToUint(color.y), floatBitsToUint(color.z),
-               uint(first.x) | (uint(first.y) << 8) | (uint(side) << 16));
+// Where the zexel of the cell at pixel `cell` landed (the centre of its 1/4096 step).
+SHARED_FN vec2 zexel_cell_landing(uvec4 c, ivec2 cell) {
+  vec2 at = vec2(float(c.y & 4095u), float((c.y >> 12) & 4095u));
+  return vec2(cell) + (at + 0.5f) / ZEXEL_CELL_STEPS;
 }
 
-SHARED_FN vec2 zexel_cell_landing(uvec4 first) {
-  return vec2(uintBitsToFloat(first.y), uintBitsToFloat(first.z));
+SHARED_FN int zexel_cell_side(uvec4 c) {
+  return int(c.y >> 24) + 1;
 }
 
-SHARED_FN float zexel_cell_falloff(uvec4 first) {
-  return uintBitsToFloat(first.w);
+SHARED_FN vec3 zexel_cell_color(uvec4 c) {
+  vec2 rg = unpackHalf2x16(c.z);
+  return vec3(rg.x, rg.y, unpackHalf2x16(c.w).x);
 }
 
-SHARED_FN vec3 zexel_cell_color(uvec4 second) {
-  return vec3(uintBitsToFloat(second.x), uintBitsToFloat(second.y), uintBitsToFloat(second.z));
+SHARED_FN float zexel_cell_falloff(uvec4 c) {
+  return unpackHalf2x16(c.w).y;
 }
 
-// Whether the splat of a cell at pixel `cell` covers pixel `pixel`.
-SHARED_FN bool zexel_cell_covers(uvec4 second, ivec2 cell, ivec2 pixel) {
-  ivec2 d = pixel - cell - ivec2(int(second.w & 255u), int((second.w >> 8) & 255u)) + ivec2(128);
-  int side = int(second.w >> 16);
+// Whether a splat of side `side` landed at `landed` covers pixel `pixel`.
+SHARED_FN bool zexel_covers(vec2 landed, int side, ivec2 pixel) {
+  ivec2 d = pixel - zexel_splat_origin(landed, side);
   return d.x >= 0 && d.y >= 0 && d.x < side && d.y < side;
 }
 

@@ -16,7 +16,7 @@ layout(local_size_x = MIRAGE_ZEXEL_GROUP) in;
 
 layout(std430, binding = MIRAGE_BIND_ZEXEL_KEYS) coherent buffer KeyBlock { uint keys[]; };
 layout(std430, binding = MIRAGE_BIND_ZEXEL_CELLS) writeonly buffer CellBlock {
-  uvec4 cells[];  // two words a cell (the first's x unused: the key is in `keys`)
+  uvec4 cells[];  // a cell's words (x unused: the key is in `keys`)
 };
 layout(std430, binding = MIRAGE_BIND_ZEXEL_TILES) readonly buffer TileBlock { uvec2 tiles[]; };
 layout(binding = MIRAGE_UNIT_ZEXEL_MAPS) uniform sampler2DArray u_maps;  // a: distance
@@ -59,8 +59,7 @@ void splat(ivec2 texel, int level, mat3 p, float sigma) {
   if (u_pass == 0) {
     atomicMin(keys[at], key);
   } else if (keys[at] == key) {
-    cells[2 * at] = zexel_cell_first(key, o.xy, sigma);
-    cells[2 * at + 1] = zexel_cell_second(zexel.rgb, o.xy, side, ivec2(floor(o.xy)));
+    cells[at] = zexel_cell(key, o.xy, side, zexel.rgb, sigma);
   }
 }
 

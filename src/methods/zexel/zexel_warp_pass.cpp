@@ -16,7 +16,7 @@ void ZexelWarpTarget::resize(ivec2 size, const ZexelSplatOptions& splats, bool h
   const size_t cells = zexelCellCount(splats);
   if (cells > cells_count_) {
     keys_ = gpu::Buffer(cells * sizeof(uint32_t));
-    cells_ = gpu::Buffer(2 * cells * sizeof(uvec4));
+    cells_ = gpu::Buffer(cells * sizeof(uvec4));
     cells_count_ = cells;
   }
   if (size != size_) history_ = gpu::Texture();
@@ -120,8 +120,8 @@ void warpOnCpu(const ZexelWarpJob& job, const View& output, int threads, ZexelWa
   arena.execute([&] {
     cells = warpZexels(sources(job), job.plans, outputCamera(output), job.splats, threads != 1);
   });
-  std::vector<uint32_t> keys(cells.size() / 2);
-  for (size_t i = 0; i < keys.size(); ++i) keys[i] = cells[2 * i].x;
+  std::vector<uint32_t> keys(cells.size());
+  for (size_t i = 0; i < keys.size(); ++i) keys[i] = cells[i].x;
   target.keys().upload(std::span<const uint32_t>(keys));
   target.cells().upload(std::span<const uvec4>(cells));
   target.bind();
