@@ -22,13 +22,17 @@ void GLAPIENTRY debugCallback(GLenum source, GLenum type, GLuint id, GLenum seve
 
 }  // namespace
 
-bool debugContextByDefault() {
-  if (const char* env = std::getenv("MIRAGE_GL_DEBUG")) return std::strcmp(env, "0") != 0;
+bool debugSwitch(const char* name) {
+  if (const char* env = std::getenv(name)) return std::strcmp(env, "0") != 0;
 #ifdef NDEBUG
   return false;
 #else
   return true;
 #endif
+}
+
+bool debugContextByDefault() {
+  return debugSwitch("MIRAGE_GL_DEBUG");
 }
 
 void Context::queryInfo(const std::string& platform) {

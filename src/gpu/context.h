@@ -32,6 +32,9 @@ struct ContextOptions {
   bool debug = false;  // request a debug context and print KHR_debug messages
 };
 
+// A debugging aid's default: the environment variable `name` when set ("0" off, anything else
+// on), otherwise on in debug builds and off in release builds.
+bool debugSwitch(const char* name);
 // The default debug setting: on in debug builds and when MIRAGE_GL_DEBUG=1.
 bool debugContextByDefault();
 

@@ -1,29 +1,19 @@
 #include "gpu/feedback_check.h"
 
 #include <atomic>
-#include <cstdlib>
-#include <cstring>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "core/error.h"
+#include "gpu/context.h"
 #include "gpu/gl.h"
 
 namespace mirage::gpu {
 namespace {
 
-bool checksByDefault() {
-  if (const char* env = std::getenv("MIRAGE_GL_CHECK_FEEDBACK")) return std::strcmp(env, "0") != 0;
-#ifdef NDEBUG
-  return false;
-#else
-  return true;
-#endif
-}
-
 std::atomic<bool>& enabled() {
-  static std::atomic<bool> on{checksByDefault()};
+  static std::atomic<bool> on{debugSwitch("MIRAGE_GL_CHECK_FEEDBACK")};
   return on;
 }
 

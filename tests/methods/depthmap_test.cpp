@@ -242,16 +242,8 @@ TEST(DepthMapSet, MapsFollowTheirObjectRigidly) {
 
 class DepthMapImages : public GlTest {};
 
-// teapot-sphere without its floor: the reflector pixels show the sky and the two objects, so
-// that the objects' reflections carry the error.
-Scene objectsOnly() {
-  Scene scene = makeBuiltinScene("teapot-sphere");
-  scene.instances.erase(scene.instances.begin());  // the floor comes first
-  return scene;
-}
-
 TEST_F(DepthMapImages, ReflectsCurvedObjectsBetterThanBillboards) {
-  const Scene scene = objectsOnly();
+  const Scene scene = teapotSphereObjectsOnly();
   FrameSettings settings;
   settings.order = 1;
   const ivec2 size{360, 256};
@@ -269,7 +261,7 @@ TEST_F(DepthMapImages, ReflectsCurvedObjectsBetterThanBillboards) {
 TEST_F(DepthMapImages, SrdmSearchMatchesTheFullMapWalk) {
   // One SRDM row of 8 points against the walk over every texel of the full map: the same
   // reflections up to the simplification error at the objects' edges.
-  const Scene scene = objectsOnly();
+  const Scene scene = teapotSphereObjectsOnly();
   FrameSettings settings;
   settings.order = 1;
   const ivec2 size{360, 256};
@@ -291,7 +283,7 @@ TEST_F(DepthMapImages, TwoRowsRecoverCoarseAngularSteps) {
   // from oblique rays; each second-row search (--srdm-rows 2) must render its own image, closer
   // to the ray tracer than one row's. (The rays here are short: the gains are a fraction of a
   // dB, against 6-7 dB on the bunny close-up of docs/depthmap-results.md.)
-  const Scene scene = objectsOnly();
+  const Scene scene = teapotSphereObjectsOnly();
   FrameSettings settings;
   settings.order = 1;
   const ivec2 size{360, 256};
@@ -323,7 +315,7 @@ TEST_F(DepthMapImages, GpuSrdmBuilderGivesTheCpuBuildersImage) {
   // The compute-shader builder works in place on the method's depth and SRDM arrays (texture
   // views of one layer and of n layers); its rows equal the CPU builder's, so the frames must
   // be the same bit for bit.
-  const Scene scene = objectsOnly();
+  const Scene scene = teapotSphereObjectsOnly();
   FrameSettings settings;
   settings.order = 1;
   const ivec2 size{240, 160};
@@ -375,7 +367,7 @@ TEST_F(DepthMapImages, SelfMapsReflectAConcaveReflectorInItself) {
 }
 
 TEST_F(DepthMapImages, RigidMotionRebuildsNothingAndStaysCorrect) {
-  Scene scene = objectsOnly();
+  Scene scene = teapotSphereObjectsOnly();
   const int teapot = instanceNamed(scene, "teapot");
   ASSERT_GE(teapot, 0);
   Instance& inst = scene.instances[size_t(teapot)];
