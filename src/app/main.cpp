@@ -5,11 +5,13 @@
 #include <spdlog/spdlog.h>
 
 #include "app/commands.h"
+#include "app/worker_threads.h"
 #include "core/error.h"
 #include "core/interrupt.h"
 
 int main(int argc, char** argv) {
   using namespace mirage;
+  const app::WorkerThreadsJoined workers;
   // Logs go to stderr so that stdout carries only results (`mirage scenes`).
   spdlog::set_default_logger(spdlog::stderr_color_mt("mirage"));
   spdlog::set_pattern("mirage: %^%l%$: %v");
