@@ -85,6 +85,23 @@ Texture Texture::view(const Texture& source, GLenum target, int first_layer, int
   return t;
 }
 
+Texture Texture::overBuffer(GLenum internal_format, const Buffer& buffer) {
+  const uint64_t texels = buffer.size() / texelBytes(internal_format);
+  GLint largest = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &largest);
+  if (texels > uint64_t(largest))
+    throwGpu("a buffer texture of {} texels is beyond the driver's GL_MAX_TEXTURE_BUFFER_SIZE ({})",
+             texels, largest);
+  // Buffer textures have no sampling state: the constructor's defaults are not set.
+  Texture t(0, internal_format, {int(texels), 1}, 1, 1);
+  t.target_ = GL_TEXTURE_BUFFER;
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_BUFFER, 1, &id);
+  t.handle_ = Handle<TextureTraits>(id);
+  glTextureBuffer(id, internal_format, buffer.id());
+  return t;
+}
+
 int Texture::fullMipLevels(int size) {
   return std::bit_width(unsigned(std::max(size, 1)));
 }

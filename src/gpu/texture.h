@@ -1,7 +1,9 @@
-// GPU textures (DSA, immutable storage): 2D, 2D arrays, cube maps and cube-map arrays.
+// GPU textures (DSA, immutable storage): 2D, 2D arrays, cube maps and cube-map arrays; and buffer
+// textures over a gpu::Buffer's storage.
 #pragma once
 
 #include "core/math.h"
+#include "gpu/buffer.h"
 #include "gpu/handle.h"
 
 namespace mirage::gpu {
@@ -21,6 +23,12 @@ class Texture {
   // (GL_TEXTURE_2D for one layer, GL_TEXTURE_2D_ARRAY for several): the same storage, so that a
   // pass written for a 2D texture or a whole array can work on part of a larger array.
   static Texture view(const Texture& source, GLenum target, int first_layer, int layers);
+  // A buffer texture: `buffer`'s storage read as texels of `internal_format` (texelFetch on a
+  // samplerBuffer), no copy. A shader reading a storage buffer it does not write is better served
+  // so on llvmpipe, which loads a storage buffer lane by lane but fetches texels as vectors.
+  // Throws a GpuError where the buffer holds more texels than the driver's
+  // GL_MAX_TEXTURE_BUFFER_SIZE.
+  static Texture overBuffer(GLenum internal_format, const Buffer& buffer);
 
   GLuint id() const { return handle_.id(); }
   GLenum target() const { return target_; }

@@ -75,7 +75,8 @@ void keepNearest(std::atomic<uint64_t>& cell, uint64_t key) {
 
 }  // namespace mirage
 
-// The shared gather reads the cells through this accessor; the cells are the calling thread's.
+// The shared gather and fill read the cells through these accessors; the cells are the calling
+// thread's.
 namespace mirage::shading {
 namespace {
 thread_local const mirage::ZexelCells* g_cells = nullptr;
@@ -86,18 +87,35 @@ inline uvec4 zexel_cell_at(ivec2 pixel) {
   const int at = zexel_cell_index(pixel, g_rect, g_margin);
   return at < 0 ? uvec4(MIRAGE_ZEXEL_EMPTY) : (*g_cells)[size_t(at)];
 }
+inline uint zexel_key_at(ivec2 pixel) {
+  return zexel_cell_at(pixel).x;
+}
 }  // namespace mirage::shading
 
+#include "methods/zexel/zexel_fill_shared.h"
 #include "methods/zexel/zexel_gather_shared.h"
 
 namespace mirage {
 
-vec4 gatherZexels(const ZexelCells& cells, const ZexelSplatOptions& options, ivec2 pixel) {
+namespace {
+
+void readCells(const ZexelCells& cells, const ZexelSplatOptions& options) {
   shading::g_cells = &cells;
   shading::g_rect = options.rect;
   shading::g_margin = zexelCellMargin(options);
+}
+
+}  // namespace
+
+vec4 gatherZexels(const ZexelCells& cells, const ZexelSplatOptions& options, ivec2 pixel) {
+  readCells(cells, options);
   return shading::zexel_gather(pixel, zexelSplatReach(options), zexelSplatsAllCover(options),
                                options.tolerance);
+}
+
+vec4 fillZexel(const ZexelCells& cells, const ZexelSplatOptions& options, int fill, ivec2 pixel) {
+  readCells(cells, options);
+  return shading::zexel_farthest_neighbour(pixel, fill, options.unit, options.rect);
 }
 
 int zexelSplatReach(const ZexelSplatOptions& options) {

@@ -44,9 +44,12 @@ ZexelCells warpZexels(const std::vector<ZexelWarpSource>& sources,
 ZexelCells warpZexels(const std::vector<ZexelWarpSource>& sources, const WarpCamera& out,
                       const ZexelSplatOptions& options, bool parallel);
 
-// What the mirror shows at `pixel` of those cells (zexel_gather_shared.h, as zexel_mirror.frag
+// What the mirror shows at `pixel` of those cells (zexel_gather_shared.h, as zexel_resolve.comp
 // runs it): rgb and the nearest covering splat's distance; alpha -1 where none covers it.
 vec4 gatherZexels(const ZexelCells& cells, const ZexelSplatOptions& options, ivec2 pixel);
+// What the fill (zexel_fill_shared.h) finds for exposed pixel `pixel` within `fill` output pixels
+// (alpha -1: nothing).
+vec4 fillZexel(const ZexelCells& cells, const ZexelSplatOptions& options, int fill, ivec2 pixel);
 
 // A map's coarser levels from its level 0 as zexel_pyramid.comp builds them (zexel_parent): the
 // levels of a map the tests and benchmarks make on the CPU.

@@ -36,37 +36,66 @@ SHARED_FN void zexel_blend_add(SHARED_INOUT(vec4) blend, SHARED_INOUT(float) wei
 // do not fatten it over the surface behind); only where no strong splat covers the pixel do the
 // weak ones decide. (A splat met early may stay in the blend while up to twice the tolerance
 // behind its front: the price of one pass.)
+//
+// The pass in three steps, so that a shader holding the cells itself (zexel_resolve.comp's
+// window) adds them one by one: the running blends (strong, weak: rgb weighted, w the front's
+// distance, -1 none yet; and their weights), a cell added, the result.
+struct ZexelGather {
+  vec4 strong;
+  vec4 weak;
+  float strong_weights;
+  float weak_weights;
+};
+
+SHARED_FN ZexelGather zexel_gather_begin() {
+  ZexelGather g;
+  g.strong = vec4(0.0f, 0.0f, 0.0f, -1.0f);
+  g.weak = vec4(0.0f, 0.0f, 0.0f, -1.0f);
+  g.strong_weights = 0.0f;
+  g.weak_weights = 0.0f;
+  return g;
+}
+
+// Adds to pixel `pixel`'s gather the splat of `cell`, the cell of pixel `at`.
+SHARED_FN void zexel_gather_add(SHARED_INOUT(ZexelGather) g, uvec4 cell, ivec2 at, ivec2 pixel,
+                                bool all_cover, float tolerance) {
+  if (cell.x == MIRAGE_ZEXEL_EMPTY) return;
+  vec2 landed = zexel_cell_landing(cell, at);
+  if (!all_cover && !zexel_covers(landed, zexel_cell_side(cell), pixel)) return;
+  float w = zexel_weight(vec2(pixel) + 0.5f, landed, zexel_cell_falloff(cell));
+  // One blend_add on whichever blend the splat joins (selects, not branches: a shader runs both
+  // sides of a branch its lanes disagree on).
+  bool is_strong = w >= ZEXEL_WEIGHT_STRONG;
+  vec4 blend = is_strong ? g.strong : g.weak;
+  float weights = is_strong ? g.strong_weights : g.weak_weights;
+  zexel_blend_add(blend, weights, uintBitsToFloat(cell.x), w, zexel_cell_color(cell), tolerance);
+  g.strong = is_strong ? blend : g.strong;
+  g.strong_weights = is_strong ? weights : g.strong_weights;
+  g.weak = is_strong ? g.weak : blend;
+  g.weak_weights = is_strong ? g.weak_weights : weights;
+}
+
+SHARED_FN vec4 zexel_gather_end(ZexelGather g, float tolerance) {
+  if (g.strong.w < 0.0f)
+    return g.weak.w < 0.0f ? g.weak : vec4(vec3(g.weak) / g.weak_weights, g.weak.w);
+  vec4 strong = g.strong;
+  float strong_weights = g.strong_weights;
+  if (g.weak.w >= 0.0f && zexel_in_front(g.weak.w, strong.w, tolerance) &&
+      zexel_in_front(strong.w, g.weak.w, tolerance)) {
+    strong = vec4(vec3(strong) + vec3(g.weak), min(strong.w, g.weak.w));
+    strong_weights += g.weak_weights;
+  }
+  return vec4(vec3(strong) / strong_weights, strong.w);
+}
+
 SHARED_FN vec4 zexel_gather(ivec2 pixel, int reach, bool all_cover, float tolerance) {
-  vec4 strong = vec4(0.0f, 0.0f, 0.0f, -1.0f), weak = vec4(0.0f, 0.0f, 0.0f, -1.0f);
-  float strong_weights = 0.0f, weak_weights = 0.0f;
-  vec2 centre = vec2(pixel) + 0.5f;
+  ZexelGather g = zexel_gather_begin();
   for (int dy = -reach; dy <= reach; ++dy)
     for (int dx = -reach; dx <= reach; ++dx) {
       ivec2 at = pixel + ivec2(dx, dy);
-      uvec4 cell = zexel_cell_at(at);
-      if (cell.x == MIRAGE_ZEXEL_EMPTY) continue;
-      vec2 landed = zexel_cell_landing(cell, at);
-      if (!all_cover && !zexel_covers(landed, zexel_cell_side(cell), pixel)) continue;
-      float w = zexel_weight(centre, landed, zexel_cell_falloff(cell));
-      // One blend_add on whichever blend the splat joins (selects, not branches: a shader runs
-      // both sides of a branch its lanes disagree on).
-      bool is_strong = w >= ZEXEL_WEIGHT_STRONG;
-      vec4 blend = is_strong ? strong : weak;
-      float weights = is_strong ? strong_weights : weak_weights;
-      zexel_blend_add(blend, weights, uintBitsToFloat(cell.x), w, zexel_cell_color(cell),
-                      tolerance);
-      strong = is_strong ? blend : strong;
-      strong_weights = is_strong ? weights : strong_weights;
-      weak = is_strong ? weak : blend;
-      weak_weights = is_strong ? weak_weights : weights;
+      zexel_gather_add(g, zexel_cell_at(at), at, pixel, all_cover, tolerance);
     }
-  if (strong.w < 0.0f) return weak.w < 0.0f ? weak : vec4(vec3(weak) / weak_weights, weak.w);
-  if (weak.w >= 0.0f && zexel_in_front(weak.w, strong.w, tolerance) &&
-      zexel_in_front(strong.w, weak.w, tolerance)) {
-    strong = vec4(vec3(strong) + vec3(weak), min(strong.w, weak.w));
-    strong_weights += weak_weights;
-  }
-  return vec4(vec3(strong) / strong_weights, strong.w);
+  return zexel_gather_end(g, tolerance);
 }
 
 SHARED_END

@@ -8,6 +8,7 @@
 #include "methods/zexel/zexel_cpu_warper.h"
 #include "methods/zexel/zexel_curved.h"
 #include "methods/zexel/zexel_maps.h"
+#include "methods/zexel/zexel_resolve_pass.h"
 #include "methods/zexel/zexel_shared.h"
 #include "methods/zexel/zexel_splat_shared.h"
 #include "methods/zexel/zexel_warp_pass.h"
@@ -47,15 +48,16 @@ GLuint newQuery() {
   return id;
 }
 
-// The mirror's program, its gather's reach a constant (zexel_mirror.frag).
-gpu::Program mirrorProgram(int splat, int pixel_scale) {
+// The splats' sizes (what the resolve's program is built for).
+ZexelSplatOptions splatSizes(int splat, int pixel_scale) {
   ZexelSplatOptions o;
   o.splat = splat;
   o.unit = pixel_scale;
-  return gpu::Program::graphics(
-      "render/shaders/scene.vert", "methods/zexel/zexel_mirror.frag",
-      {"ZEXEL_REACH " + std::to_string(zexelSplatReach(o)),
-       std::string("ZEXEL_ALL_COVER ") + (zexelSplatsAllCover(o) ? "1" : "0")});
+  return o;
+}
+
+gpu::Program mirrorProgram() {
+  return gpu::Program::graphics("render/shaders/scene.vert", "methods/zexel/zexel_mirror.frag");
 }
 
 // A planar mirror: its maps and this frame's warp of them.
@@ -79,9 +81,10 @@ class ZexelMethod final : public Method {
         tolerance_(float(setup.params.real("zexel-depth-tolerance")) / 100.0f),
         warp_program_(gpu::Program::compute("methods/zexel/zexel_warp.comp")),
         pyramid_program_(gpu::Program::compute("methods/zexel/zexel_pyramid.comp")),
-        mirror_program_(mirrorProgram(splat_, pixel_scale_)),
+        mirror_program_(mirrorProgram()),
         base_program_(
             gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")),
+        resolve_(splatSizes(splat_, pixel_scale_)),
         counters_(MIRAGE_ZEXEL_COUNTERS * sizeof(uint32_t)),
         curved_(setup) {
     checkDriverLimits(options_);
@@ -191,14 +194,13 @@ class ZexelMethod final : public Method {
       warpOnCpu(job, mirrored, threads_, m.target);
     else
       warpOnGpu(warp_program_, job, mirrored, m.target);
+    resolve_.run(job.splats, fill_, m.target);
     return true;
   }
 
   // How the zexels of mirror `m` become pixels this frame.
   ZexelSplatOptions splatOptions(const FrameContext& frame, const ZexelMirror& m) const {
-    ZexelSplatOptions o;
-    o.splat = splat_;
-    o.unit = pixel_scale_;
+    ZexelSplatOptions o = splatSizes(splat_, pixel_scale_);
     o.rect = screenRect(frame.view, frame.gpu.instanceBounds(m.maps.mirror()));
     o.lod = options_.hierarchy;
     // Zexels at most a pixel apart for 1x1 splats, two for larger or magnification-sized ones:
@@ -211,13 +213,9 @@ class ZexelMethod final : public Method {
   // The mirror with what its warp left around its pixels.
   void draw(FrameContext& frame, const ZexelMirror& m) {
     const ZexelSplatOptions splats = splatOptions(frame, m);
-    m.target.bind();
+    m.target.bindTexels();
     mirror_program_.set("u_keep", keep_ ? 1 : 0);
-    mirror_program_.set("u_fill", fill_);
-    mirror_program_.set("u_unit", pixel_scale_);
     mirror_program_.set("u_rect", splats.rect);
-    mirror_program_.set("u_margin", zexelCellMargin(splats));
-    mirror_program_.set("u_tolerance", splats.tolerance);
     mirror_program_.use();
     frame.gpu.draw(m.maps.mirror());
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
@@ -230,6 +228,7 @@ class ZexelMethod final : public Method {
   int fill_;
   float tolerance_;
   gpu::Program warp_program_, pyramid_program_, mirror_program_, base_program_;
+  ZexelResolvePass resolve_;
   gpu::Buffer counters_;
   gpu::Handle<gpu::QueryTraits> pixels_query_{newQuery()};
   bool counted_ = false;  // the query has run

@@ -1,5 +1,5 @@
-// Method `zexel`: the GPU warper (a compute shader). One invocation per zexel of the tiles that
-// warp one level of one map (zexel_tiles.h plans them): it moves the zexel by McMillan's warp
+// Method `zexel`: the GPU warper (a compute shader). One invocation per zexel of the tiles of one
+// map, every level they warp in one dispatch (zexel_tiles.h plans them, finest level first): it moves the zexel by McMillan's warp
 // (zexel_warp_shared.h) into the image seen from the mirrored eye and leaves it in the cell of
 // the pixel it lands in, with its splat's side and kernel (zexel_splat_shared.h; the mirror
 // gathers the splats covering each pixel). Two passes make each cell's choice exact without
@@ -24,10 +24,10 @@ layout(binding = MIRAGE_UNIT_ZEXEL_MAPS) uniform sampler2DArray u_maps;  // a: d
 uniform int u_pass;         // 0: the nearest distances; 1: the rest of the cells
 uniform int u_layer;        // the map's layer in u_maps
 uniform int u_width;        // level 0's zexels per row
-uniform int u_level;        // the level these tiles warp
-uniform int u_span;         // the tiles' level minus u_level: a tile is 2^u_span zexels a side
-uniform int u_first;        // these tiles' first entry in `tiles`
-uniform int u_count;        // and how many there are
+uniform int u_finest;       // the level the plan's first tiles warp (its finest)
+uniform int u_tile_level;   // the tiles' own level: a tile warping level l is 2^(it - l) a side
+uniform ivec4 u_ends;       // per level from the finest, the invocations up to its last zexel
+uniform ivec4 u_firsts;     // per level from the finest, its first tile in `tiles`
 uniform mat4 u_pi;          // level 0's pixel matrix (upper 3 x 3)
 uniform vec3 u_ci;          // the map's centre of projection
 uniform mat4 u_po_inverse;  // the inverse of the output image's pixel matrix (upper 3 x 3)
@@ -40,7 +40,7 @@ uniform int u_pixel_scale;  // frame pixels per output pixel along a side (--ssa
 // Warps zexel `texel` of `level` into its cell: pass 0 its distance, pass 1 the rest.
 void splat(ivec2 texel, int level, mat3 p, float sigma) {
   if (any(greaterThanEqual(texel, ivec2(max(u_width >> level, 1))))) return;
-  vec4 zexel = texelFetch(u_maps, ivec3(texel, u_layer), u_level);
+  vec4 zexel = texelFetch(u_maps, ivec3(texel, u_layer), level);
   if (!(zexel.a > 0.0f)) return;  // never written: outside every capture
   vec2 xi = vec2(texel) + 0.5f;
   float delta = zexel.a >= 0.5f * MISS_DISTANCE ? 0.0f : zexel_disparity_from_distance(p, xi, zexel.a);
@@ -64,14 +64,18 @@ void splat(ivec2 texel, int level, mat3 p, float sigma) {
 }
 
 void main() {
-  // This dispatch's zexels, tile after tile: gl_NumWorkGroups.x groups a row of groups.
-  uint index = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * MIRAGE_ZEXEL_GROUP +
-               gl_LocalInvocationIndex;
-  int tile = int(index >> (2 * u_span));
-  if (tile >= u_count) return;
-  uvec2 word = tiles[u_first + tile];
-  int n = 1 << u_span, k = int(index) & (n * n - 1);
-  ivec2 texel = ivec2(word.x & 0xFFFFu, word.x >> 16) * n + ivec2(k & (n - 1), k >> u_span);
-  splat(texel, u_level, zexel_level_matrix(mat3(u_pi), u_level),
+  // This dispatch's zexels, level after level and tile after tile: gl_NumWorkGroups.x groups a
+  // row of groups.
+  int index = int((gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * MIRAGE_ZEXEL_GROUP +
+                  gl_LocalInvocationIndex);
+  if (index >= u_ends.w) return;
+  int i = int(index >= u_ends.x) + int(index >= u_ends.y) + int(index >= u_ends.z);
+  int start = i == 0 ? 0 : (i == 1 ? u_ends.x : (i == 2 ? u_ends.y : u_ends.z));
+  int level = u_finest + i, span = u_tile_level - level;
+  int tile = (index - start) >> (2 * span);
+  uvec2 word = tiles[u_firsts[i] + tile];
+  int n = 1 << span, k = (index - start) & (n * n - 1);
+  ivec2 texel = ivec2(word.x & 0xFFFFu, word.x >> 16) * n + ivec2(k & (n - 1), k >> span);
+  splat(texel, level, zexel_level_matrix(mat3(u_pi), level),
         zexel_kernel_sigma(uintBitsToFloat(word.y)));
 }

@@ -4,9 +4,11 @@
 
 #include <tbb/task_arena.h>
 
+#include "core/error.h"
 #include "methods/zexel/zexel_camera.h"
 #include "methods/zexel/zexel_cpu_warper.h"
 #include "methods/zexel/zexel_shared.h"
+#include "methods/zexel/zexel_splat_shared.h"
 #include "shading/shading.h"
 
 namespace mirage {
@@ -17,7 +19,18 @@ void ZexelWarpTarget::resize(ivec2 size, const ZexelSplatOptions& splats, bool h
   if (cells > cells_count_) {
     keys_ = gpu::Buffer(cells * sizeof(uint32_t));
     cells_ = gpu::Buffer(cells * sizeof(uvec4));
+    // The mirror reads them as texels (gpu::Texture::overBuffer says why).
+    keys_texels_ = gpu::Texture::overBuffer(GL_R32UI, keys_);
+    cells_texels_ = gpu::Texture::overBuffer(GL_RGBA32UI, cells_);
     cells_count_ = cells;
+  }
+  const size_t pixels =
+      size_t(splats.rect.z - splats.rect.x) * size_t(splats.rect.w - splats.rect.y);
+  if (pixels > resolved_count_) {
+    resolved_ = gpu::Buffer(pixels * sizeof(vec4));
+    resolved_texels_ = gpu::Texture::overBuffer(GL_RGBA32F, resolved_);
+    exposures_ = gpu::Buffer((MIRAGE_ZEXEL_EXPOSURES_HEADER + pixels) * sizeof(uint32_t));
+    resolved_count_ = pixels;
   }
   if (size != size_) history_ = gpu::Texture();
   if (history && history_.id() == 0) {
@@ -32,6 +45,27 @@ void ZexelWarpTarget::clear(size_t cells) const {
   const GLuint empty = MIRAGE_ZEXEL_EMPTY;
   glClearNamedBufferSubData(keys_.id(), GL_R32UI, 0, GLsizeiptr(cells * sizeof(uint32_t)),
                             GL_RED_INTEGER, GL_UNSIGNED_INT, &empty);
+}
+
+void ZexelWarpTarget::bindTexels() const {
+  keys_texels_.bind(MIRAGE_UNIT_ZEXEL_KEYS);
+  cells_texels_.bind(MIRAGE_UNIT_ZEXEL_CELLS);
+  resolved_texels_.bind(MIRAGE_UNIT_ZEXEL_RESOLVED);
+  if (history_.id() != 0)
+    glBindImageTexture(MIRAGE_IMAGE_ZEXEL_HISTORY, history_.id(), 0, GL_FALSE, 0, GL_READ_WRITE,
+                       GL_RGBA32F);
+}
+
+void ZexelWarpTarget::bindResolvedImage() const {
+  glBindImageTexture(MIRAGE_IMAGE_ZEXEL_RESOLVED, resolved_texels_.id(), 0, GL_FALSE, 0,
+                     GL_WRITE_ONLY, GL_RGBA32F);
+}
+
+void ZexelWarpTarget::clearExposures() const {
+  // No work groups (yet), 1, 1; no exposures.
+  const uint32_t header[MIRAGE_ZEXEL_EXPOSURES_HEADER] = {0u, 1u, 1u, 0u};
+  glNamedBufferSubData(exposures_.id(), 0, sizeof(header), header);
+  exposures_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_ZEXEL_EXPOSURES);
 }
 
 void ZexelWarpTarget::bind() const {
@@ -93,24 +127,33 @@ void warpOnGpu(const gpu::Program& program, const ZexelWarpJob& job, const View&
       program.set("u_layer", job.chosen[slot]);
       program.set("u_pi", mat4(in.p));
       program.set("u_ci", in.c);
-      for (size_t l = 0; l < plan.by_level.size(); ++l) {
-        const int count = int(plan.by_level[l].size()), level = plan.finest + int(l);
-        const int span = plan.tile_level - level;
-        if (count > 0) {
-          program.set("u_level", level);
-          program.set("u_span", span);
-          program.set("u_first", first);
-          program.set("u_count", count);
-          // An invocation per zexel, in rows of at most 65535 groups.
-          const long groups =
-              ((long(count) << (2 * span)) + MIRAGE_ZEXEL_GROUP - 1) / MIRAGE_ZEXEL_GROUP;
-          const long row = std::min(groups, 65535L);
-          glDispatchCompute(GLuint(row), GLuint((groups + row - 1) / row), 1);
+      // Every level of the plan in one dispatch (a dispatch has a cost of its own: about 50 us
+      // on llvmpipe with two threads): per level its zexels' end and its first tile.
+      static_assert(shading::ZEXEL_TILE_SPAN + 1 == 4, "a plan's levels fill an ivec4");
+      if (plan.by_level.size() > 4)
+        throwRuntime("zexel: a tile plan of {} levels (at most 4)", plan.by_level.size());
+      ivec4 ends(0), firsts(0);
+      long zexels = 0;
+      for (size_t l = 0; l < 4; ++l) {
+        firsts[int(l)] = first;
+        if (l < plan.by_level.size()) {
+          const int count = int(plan.by_level[l].size());
+          zexels += long(count) << (2 * (plan.tile_level - plan.finest - int(l)));
+          first += count;
         }
-        first += count;
+        ends[int(l)] = int(zexels);
       }
+      if (zexels == 0) continue;
+      program.set("u_finest", plan.finest);
+      program.set("u_tile_level", plan.tile_level);
+      program.set("u_ends", ends);
+      program.set("u_firsts", firsts);
+      // An invocation per zexel, in rows of at most 65535 groups.
+      const long groups = (zexels + MIRAGE_ZEXEL_GROUP - 1) / MIRAGE_ZEXEL_GROUP;
+      const long row = std::min(groups, 65535L);
+      glDispatchCompute(GLuint(row), GLuint((groups + row - 1) / row), 1);
     }
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   }
 }
 

@@ -7,6 +7,7 @@
 
 #include "gpu/buffer.h"
 #include "gpu/program.h"
+#include "gpu/texture.h"
 #include "methods/zexel/zexel_maps.h"
 #include "methods/zexel/zexel_tiles.h"
 
@@ -25,15 +26,26 @@ struct ZexelWarpJob {
 // Plans the tiles of the job's chosen maps for `output` (zexel_tiles.h).
 void planZexelJob(ZexelWarpJob& job, const View& output);
 
-// A mirror's cells (zexelCellCount: their keys apart, the rest), the tiles of its warp, and its
-// last image (the no-clear option, frame-sized).
+// A mirror's cells (zexelCellCount: their keys apart, the rest), the tiles of its warp, what its
+// rectangle's pixels show (the resolve's texels and the exposures it lists), and its last image
+// (the no-clear option, frame-sized).
 class ZexelWarpTarget {
  public:
   void resize(ivec2 size, const ZexelSplatOptions& splats, bool history);
   ivec2 size() const { return size_; }
   // The first `cells` cells empty (their keys).
   void clear(size_t cells) const;
-  void bind() const;  // the buffers at their bindings and the history image
+  void bind() const;  // the buffers at their bindings and the history image (the warp)
+  // The keys, cells and resolved texels as buffer textures at their units and the history image
+  // (the mirror).
+  void bindTexels() const;
+  // The resolve's output, one texel a pixel of the mirror's rectangle (zexel_resolve.comp; rows
+  // from the rectangle's lowest), as the image it writes and as a buffer.
+  void bindResolvedImage() const;
+  const gpu::Buffer& resolved() const { return resolved_; }
+  // The list of exposures the resolve leaves the fill (zexel_shared.h), emptied and bound.
+  void clearExposures() const;
+  const gpu::Buffer& exposures() const { return exposures_; }
   gpu::Buffer& keys() { return keys_; }
   gpu::Buffer& cells() { return cells_; }
   // The tiles' words of a plan, uploaded.
@@ -41,9 +53,9 @@ class ZexelWarpTarget {
 
  private:
   ivec2 size_{0};
-  size_t cells_count_ = 0;
-  gpu::Buffer keys_, cells_, tiles_;
-  gpu::Texture history_;
+  size_t cells_count_ = 0, resolved_count_ = 0;
+  gpu::Buffer keys_, cells_, tiles_, resolved_, exposures_;
+  gpu::Texture keys_texels_, cells_texels_, resolved_texels_, history_;
 };
 
 // The GPU warper: per pass (nearest distances, then the sums), chosen map and level of its plan,
