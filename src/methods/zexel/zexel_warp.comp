@@ -1,8 +1,8 @@
 // Method `zexel`: the GPU warper (a compute shader). One invocation per zexel of the tiles of one
-// map, every level they warp in one dispatch (zexel_tiles.h plans them, finest level first): it moves the zexel by McMillan's warp
-// (zexel_warp_shared.h) into the image seen from the mirrored eye and leaves it in the cell of
-// the pixel it lands in, with its splat's side and kernel (zexel_splat_shared.h; the mirror
-// gathers the splats covering each pixel). Two passes make each cell's choice exact without
+// map, every level they warp in one dispatch (zexel_tiles.h plans them, finest level first): it
+// moves the zexel by McMillan's warp (zexel_warp_shared.h) into the image seen from the mirrored
+// eye and leaves it in the cell of the pixel it lands in, with its splat's side and kernel
+// (zexel_splat_shared.h; the resolve gathers the splats covering each pixel). Two passes make each cell's choice exact without
 // 64-bit atomics: the first keeps the nearest landed distance (atomicMin on its float bits), the
 // second writes the rest of the cell for a zexel whose distance is the one kept (a tie writes
 // either). Zexels that saw nothing are directions (δ = 0) and land infinitely far: where they are
