@@ -81,6 +81,41 @@ TEST_F(ZexelFrames, GpuAndCpuWarpersAgree) {
   }
 }
 
+// The mirror's pixels are resolved by the compute pass or by the mirror's own shader, the same
+// shared gather either way: the frames are equal to the bit (defaults, magnification splats,
+// 2 x 2 splats, the no-clear option over two frames) on mirror-room and two-mirrors. Choosing by
+// itself (auto, from the second frame: the first has no count of a mirror's pixels), the method
+// takes the pass for the mirror in front of the eye, whose screen rectangle is about the mirror
+// (1.6 times its visible pixels on two-mirrors), and not for two-mirrors' mirror behind the eye,
+// whose bounds project to the whole screen and which shows no pixel.
+TEST_F(ZexelFrames, ResolvePassAndMirrorShaderGiveTheSameFrame) {
+  for (const char* name : {"mirror-room", "two-mirrors"}) {
+    const Scene scene = makeBuiltinScene(name);
+    const View v(scene.camera(), size_);
+    for (const Params& p : {Params{}, Params{{"zexel-splat", "0"}}, Params{{"zexel-splat", "2"}},
+                            Params{{"zexel-clear", "off"}}}) {
+      auto with = [&](const char* where) {
+        Params q = p;
+        q["zexel-resolve"] = where;
+        return renderZexel(scene, q, {v, v});
+      };
+      const ZexelFrame pass = with("pass"), mirror = with("mirror");
+      EXPECT_GT(pass.stats.at("zexel_resolve_passes"), 0.0);
+      EXPECT_EQ(mirror.stats.at("zexel_resolve_passes"), 0.0);
+      size_t differ = 0;
+      for (int y = 0; y < pass.frame.color.height(); ++y)
+        for (int x = 0; x < pass.frame.color.width(); ++x)
+          differ += pass.frame.color(x, y) != mirror.frame.color(x, y) ? 1 : 0;
+      EXPECT_EQ(differ, 0u) << name << ", " << (p.empty() ? "defaults" : p.begin()->first);
+    }
+    const ZexelFrame chosen = renderZexel(scene, {}, {v, v});
+    EXPECT_EQ(chosen.stats.at("zexel_resolve_passes"), 1.0) << name;
+    const ZexelFrame all = renderZexel(scene, {{"zexel-resolve", "pass"}}, {v, v});
+    EXPECT_EQ(all.stats.at("zexel_resolve_passes"), std::string(name) == "mirror-room" ? 1.0 : 2.0)
+        << name;
+  }
+}
+
 TEST_F(ZexelFrames, TwoMapsExposeLessThanOne) {
   auto maps = [](const char* per_frame) {
     return Params{{"zexel-maps", "8"}, {"zexel-maps-per-frame", per_frame}, {"zexel-fill", "0"}};

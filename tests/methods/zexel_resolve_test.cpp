@@ -1,8 +1,8 @@
 // The zexel mirror's resolve on the GPU (zexel_resolve.comp: a sliding window of cells where
-// splats reach a pixel, the gather's loop elsewhere) and its fill (zexel_fill.comp, from the
-// exposures the resolve lists) against the same shared code on the CPU (gatherZexels,
-// fillZexel), on random cells: every pixel of the mirror's rectangle shows the same splats' blend
-// and distance, the same pixels are exposures, and the fill finds the same zexels for them.
+// splats reach a pixel, the gather's loop elsewhere) against the same shared code on the CPU
+// (gatherZexels), on random cells: every pixel of the mirror's rectangle shows the same splats'
+// blend and distance, and the same pixels are exposures. And the fill (zexel_fill_shared.h, as
+// the mirror's shader runs it) on cells laid out by hand.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -41,18 +41,16 @@ ZexelCells randomCells(const ZexelSplatOptions& o, float empty, uint32_t seed) {
 
 class ZexelResolve : public GlTest {};
 
-TEST_F(ZexelResolve, GpuResolveAndFillEqualTheSharedCodeOnTheCpu) {
+TEST_F(ZexelResolve, GpuResolveEqualsTheGatherOnTheCpu) {
   // Splat sides: 3 (the default: the window, every splat covering), 2 (the window, coverage
-  // tested), 1, 5 and magnification-sized (the loop, reaching 0, 2 and 4 pixels); the fill within
-  // 6 pixels, none, and 2 x 2 sub-pixels a pixel (--ssaa 2: splats and walk in output pixels);
-  // one in five cells empty, and nine in ten (where the fill finds nothing for some exposures).
+  // tested), 1, 5 and magnification-sized (the loop, reaching 0, 2 and 4 pixels), and 2 x 2
+  // sub-pixels a pixel (--ssaa 2); one in five cells empty, and nine in ten.
   struct Case {
-    int splat, unit, fill;
+    int splat, unit;
     float empty;
   };
-  for (const Case c :
-       {Case{3, 1, 6, 0.2f}, Case{2, 1, 6, 0.2f}, Case{1, 1, 6, 0.2f}, Case{1, 1, 0, 0.2f},
-        Case{1, 1, 2, 0.9f}, Case{5, 1, 6, 0.2f}, Case{0, 1, 6, 0.2f}, Case{2, 2, 3, 0.2f}}) {
+  for (const Case c : {Case{3, 1, 0.2f}, Case{2, 1, 0.2f}, Case{1, 1, 0.2f}, Case{1, 1, 0.9f},
+                       Case{5, 1, 0.2f}, Case{0, 1, 0.2f}, Case{2, 2, 0.2f}}) {
     const int splat = c.splat;
     ZexelSplatOptions o;
     o.splat = splat;
@@ -66,26 +64,17 @@ TEST_F(ZexelResolve, GpuResolveAndFillEqualTheSharedCodeOnTheCpu) {
     for (size_t i = 0; i < keys.size(); ++i) keys[i] = cells[i].x;
     target.keys().upload(std::span<const uint32_t>(keys));
     target.cells().upload(std::span<const uvec4>(cells));
-    ZexelResolvePass(o).run(o, c.fill, target);
+    ZexelResolvePass(o).run(o, target);
     const int width = o.rect.z - o.rect.x, height = o.rect.w - o.rect.y;
     std::vector<vec4> resolved(size_t(width) * size_t(height));
     target.resolved().download(resolved.data(), resolved.size() * sizeof(vec4));
-    uint32_t listed[MIRAGE_ZEXEL_EXPOSURES_HEADER];
-    target.exposures().download(listed, sizeof(listed));
-    size_t exposures = 0, filled = 0, differing = 0;
+    size_t exposures = 0, differing = 0;
     float largest = 0.0f;
     for (int y = 0; y < height; ++y)
       for (int x = 0; x < width; ++x) {
         const ivec2 pixel(o.rect.x + x, o.rect.y + y);
-        vec4 cpu = gatherZexels(cells, o, pixel);
-        if (cpu.w < 0.0f) {
-          ++exposures;
-          // The resolve's marker, or the negated distance of what the fill found.
-          const vec4 found = c.fill > 0 ? fillZexel(cells, o, c.fill, pixel) : vec4(-1.0f);
-          filled += found.w >= 0.0f ? 1 : 0;
-          cpu = found.w >= 0.0f ? vec4(vec3(found), -found.w)
-                                : vec4(vec3(cpu), shading::ZEXEL_UNFILLED);
-        }
+        const vec4 cpu = gatherZexels(cells, o, pixel);
+        exposures += cpu.w < 0.0f ? 1 : 0;
         const vec4 gpu = resolved[size_t(y) * size_t(width) + size_t(x)];
         // The distance is one of the cells' (exact); the colour a ratio of weights, whose
         // exponentials llvmpipe and the C library round differently.
@@ -100,23 +89,39 @@ TEST_F(ZexelResolve, GpuResolveAndFillEqualTheSharedCodeOnTheCpu) {
         }
       }
     std::printf(
-        "splat %d, unit %d, fill %d: %zu exposures (%zu filled) of %d pixels, %zu "
-        "differ, largest colour difference %g\n",
-        splat, c.unit, c.fill, exposures, filled, width * height, differing, double(largest));
+        "splat %d, unit %d, empty %.1f: %zu exposures of %d pixels, %zu differ, largest "
+        "colour difference %g\n",
+        splat, c.unit, double(c.empty), exposures, width * height, differing, double(largest));
     EXPECT_EQ(differing, 0u) << "splat " << splat;
-    // The list holds every exposure, and the fill's dispatch a group per 64 of them.
-    const uint32_t listed_count = c.fill > 0 ? uint32_t(exposures) : 0u;
-    EXPECT_EQ(listed[3], listed_count);
-    EXPECT_EQ(listed[0], (listed_count + MIRAGE_ZEXEL_FILL_GROUP - 1) / MIRAGE_ZEXEL_FILL_GROUP);
-    // Random cells leave some pixels uncovered where splats are small (and the fill finds
-    // zexels for most of them), none where they are not.
+    // Random cells leave some pixels uncovered where splats are small.
     if (splat == 1) {
       EXPECT_GT(exposures, 100u);
-      if (c.fill > 0) {
-        EXPECT_GT(filled, exposures / 2);
-      }
     }
   }
+}
+
+// The fill walks from an exposed pixel in eight directions and takes the farthest of the first
+// zexels met: here a near zexel two pixels to the right, a far one three pixels up, and a farther
+// one beyond the near one (which the walk to the right never reaches); within a radius of 2 only
+// the near one is met; alone in an empty rectangle nothing is.
+TEST(ZexelFill, TakesTheFarthestOfTheFirstZexelsMetInEightDirections) {
+  ZexelSplatOptions o;
+  o.rect = ivec4(0, 0, 16, 16);
+  const int margin = zexelCellMargin(o);
+  ZexelCells cells(zexelCellCount(o), uvec4(MIRAGE_ZEXEL_EMPTY, 0u, 0u, 0u));
+  auto put = [&](ivec2 at, float distance, vec3 color) {
+    cells[size_t(shading::zexel_cell_index(at, o.rect, margin))] =
+        shading::zexel_cell(std::bit_cast<uint32_t>(distance), vec2(at) + 0.5f, 3, color, 0.5f);
+  };
+  const ivec2 pixel(8, 8);
+  const vec3 red(1.0f, 0.0f, 0.0f), green(0.0f, 1.0f, 0.0f), blue(0.0f, 0.0f, 1.0f);
+  EXPECT_LT(fillZexel(cells, o, 16, pixel).w, 0.0f);
+  put({10, 8}, 2.0f, red);    // right, near
+  put({13, 8}, 9.0f, blue);   // right, behind the near one
+  put({8, 11}, 5.0f, green);  // up, far
+  EXPECT_EQ(fillZexel(cells, o, 16, pixel), vec4(green, 5.0f));
+  EXPECT_EQ(fillZexel(cells, o, 2, pixel), vec4(red, 2.0f));
+  EXPECT_LT(fillZexel(cells, o, 1, pixel).w, 0.0f);
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
-// The zexel method's fill (zexel_fill.comp): what an exposed mirror pixel shows. An exposure is
-// background disoccluded by a nearer surface, so the farthest of the first zexels met walking
-// from the pixel in eight directions stands for it. Shared by the fill's shader and the C++
-// tests.
+// The zexel method's fill (run by zexel_mirror.frag): what an exposed mirror pixel shows. An
+// exposure is background disoccluded by a nearer surface, so the farthest of the first zexels
+// met walking from the pixel in eight directions stands for it. Shared by the mirror's shader and
+// the C++ tests (fillZexel).
 //
 // The includer defines, before including this file:
 //   uint zexel_key_at(ivec2 pixel);    // the key of frame pixel `pixel`'s cell

@@ -56,14 +56,30 @@ ZexelSplatOptions splatSizes(int splat, int pixel_scale) {
   return o;
 }
 
-gpu::Program mirrorProgram() {
-  return gpu::Program::graphics("render/shaders/scene.vert", "methods/zexel/zexel_mirror.frag");
+// The mirror's program: reading what the resolve pass left (`gather` false), or gathering the
+// splats itself (true: the gather's reach a constant, so that its loops unroll).
+gpu::Program mirrorProgram(const ZexelSplatOptions& sizes, bool gather) {
+  if (!gather)
+    return gpu::Program::graphics("render/shaders/scene.vert", "methods/zexel/zexel_mirror.frag");
+  return gpu::Program::graphics(
+      "render/shaders/scene.vert", "methods/zexel/zexel_mirror.frag",
+      {"ZEXEL_GATHER_IN_MIRROR", "ZEXEL_REACH " + std::to_string(zexelSplatReach(sizes)),
+       std::string("ZEXEL_ALL_COVER ") + (zexelSplatsAllCover(sizes) ? "1" : "0")});
 }
+
+// Where a mirror's pixels are resolved (--zexel-resolve): auto takes the pass while the mirror's
+// screen rectangle holds at most this many times the pixels the mirror showed the frame before.
+constexpr double kResolvePassMostPixelsPerShown = 2.0;
 
 // A planar mirror: its maps and this frame's warp of them.
 struct ZexelMirror {
   ZexelMirrorMaps maps;
   ZexelWarpTarget target;
+  // Its visible pixels: the samples its draw passes (no atomic in the shader), and how many it
+  // showed when last drawn (-1: never).
+  gpu::Handle<gpu::QueryTraits> pixels_query{newQuery()};
+  bool drawn = false, resolved = false;  // this frame: drawn; resolved by the pass
+  long shown_pixels = -1;
 };
 
 class ZexelMethod final : public Method {
@@ -79,9 +95,11 @@ class ZexelMethod final : public Method {
         keep_(setup.params.text("zexel-clear") == "off"),
         fill_(setup.params.integer("zexel-fill")),
         tolerance_(float(setup.params.real("zexel-depth-tolerance")) / 100.0f),
+        resolve_choice_(setup.params.text("zexel-resolve")),
         warp_program_(gpu::Program::compute("methods/zexel/zexel_warp.comp")),
         pyramid_program_(gpu::Program::compute("methods/zexel/zexel_pyramid.comp")),
-        mirror_program_(mirrorProgram()),
+        mirror_program_(mirrorProgram(splatSizes(splat_, pixel_scale_), false)),
+        gather_program_(mirrorProgram(splatSizes(splat_, pixel_scale_), true)),
         base_program_(
             gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")),
         resolve_(splatSizes(splat_, pixel_scale_)),
@@ -119,15 +137,13 @@ class ZexelMethod final : public Method {
     glClearNamedBufferData(counters_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     counters_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_ZEXEL_COUNTERS);
     std::vector<int> shown;
-    // The mirrors' visible pixels: the samples their draws pass (no atomic in the shader).
-    glBeginQuery(GL_SAMPLES_PASSED, pixels_query_.id());
-    for (auto& m : mirrors_)
-      if (frame.settings.order > 0 && warp(frame, *m)) {
-        draw(frame, *m);
-        shown.push_back(m->maps.mirror());
-      }
-    glEndQuery(GL_SAMPLES_PASSED);
-    counted_ = true;
+    for (auto& m : mirrors_) {
+      if (m->drawn) m->shown_pixels = long(queryResult(m->pixels_query));
+      m->drawn = frame.settings.order > 0 && warp(frame, *m);
+      if (!m->drawn) continue;
+      draw(frame, *m);
+      shown.push_back(m->maps.mirror());
+    }
     curved_.draw(frame);  // first: the base pass below then fails the depth test there
     base_program_.use();
     for (int i : frame.gpu.scene().reflectorInstances())
@@ -139,9 +155,12 @@ class ZexelMethod final : public Method {
   std::map<std::string, double> stats() const override {
     uint32_t counts[MIRAGE_ZEXEL_COUNTERS] = {};
     counters_.download(counts, sizeof(counts));
-    GLuint samples = 0;
-    if (counted_) glGetQueryObjectuiv(pixels_query_.id(), GL_QUERY_RESULT, &samples);
-    const double pixels = samples;
+    double pixels = 0.0, passes = 0.0;
+    for (const auto& m : mirrors_)
+      if (m->drawn) {
+        pixels += double(queryResult(m->pixels_query));
+        passes += m->resolved ? 1.0 : 0.0;
+      }
     std::map<std::string, double> s = {
         {"zexel_maps", double(options_.count) * double(mirrors_.size())},
         {"zexel_captures", double(captures_)},
@@ -149,6 +168,7 @@ class ZexelMethod final : public Method {
         // The mean level of the tiles warped (0: every zexel of the full maps).
         {"zexel_level", tiles_warped_ > 0 ? double(tile_levels_) / double(tiles_warped_) : 0.0},
         {"mirror_pixels", pixels},
+        {"zexel_resolve_passes", passes},
         {"exposed_fraction",
          pixels > 0 ? double(counts[MIRAGE_ZEXEL_COUNT_EXPOSED]) / pixels : 0.0},
         {"reflectors_not_planar", double(not_planar_)}};
@@ -194,8 +214,25 @@ class ZexelMethod final : public Method {
       warpOnCpu(job, mirrored, threads_, m.target);
     else
       warpOnGpu(warp_program_, job, mirrored, m.target);
-    resolve_.run(job.splats, fill_, m.target);
+    m.resolved = useResolvePass(job.splats.rect, m);
+    if (m.resolved) resolve_.run(job.splats, m.target);
     return true;
+  }
+
+  // Whether mirror `m`'s pixels within `rect` are resolved by the compute pass (each cell
+  // fetched once for three pixels, but every pixel of the rectangle resolved) or by the mirror's
+  // shader (its visible pixels alone: the cheaper where the rectangle is much larger than them,
+  // as for a mirror beside or behind the eye, whose bounds project to the whole screen).
+  bool useResolvePass(const ivec4& rect, const ZexelMirror& m) const {
+    if (resolve_choice_ != "auto") return resolve_choice_ == "pass";
+    const double area = double(std::max(rect.z - rect.x, 0)) * double(std::max(rect.w - rect.y, 0));
+    return m.shown_pixels >= 0 && area <= kResolvePassMostPixelsPerShown * double(m.shown_pixels);
+  }
+
+  static GLuint queryResult(const gpu::Handle<gpu::QueryTraits>& query) {
+    GLuint samples = 0;
+    glGetQueryObjectuiv(query.id(), GL_QUERY_RESULT, &samples);
+    return samples;
   }
 
   // How the zexels of mirror `m` become pixels this frame.
@@ -211,13 +248,20 @@ class ZexelMethod final : public Method {
   }
 
   // The mirror with what its warp left around its pixels.
-  void draw(FrameContext& frame, const ZexelMirror& m) {
+  void draw(FrameContext& frame, ZexelMirror& m) {
     const ZexelSplatOptions splats = splatOptions(frame, m);
     m.target.bindTexels();
-    mirror_program_.set("u_keep", keep_ ? 1 : 0);
-    mirror_program_.set("u_rect", splats.rect);
-    mirror_program_.use();
+    const gpu::Program& program = m.resolved ? mirror_program_ : gather_program_;
+    program.set("u_keep", keep_ ? 1 : 0);
+    program.set("u_fill", fill_);
+    program.set("u_unit", pixel_scale_);
+    program.set("u_rect", splats.rect);
+    program.set("u_margin", zexelCellMargin(splats));
+    if (!m.resolved) program.set("u_tolerance", splats.tolerance);
+    program.use();
+    glBeginQuery(GL_SAMPLES_PASSED, m.pixels_query.id());
     frame.gpu.draw(m.maps.mirror());
+    glEndQuery(GL_SAMPLES_PASSED);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   }
 
@@ -227,11 +271,10 @@ class ZexelMethod final : public Method {
   bool keep_;
   int fill_;
   float tolerance_;
-  gpu::Program warp_program_, pyramid_program_, mirror_program_, base_program_;
+  std::string resolve_choice_;
+  gpu::Program warp_program_, pyramid_program_, mirror_program_, gather_program_, base_program_;
   ZexelResolvePass resolve_;
   gpu::Buffer counters_;
-  gpu::Handle<gpu::QueryTraits> pixels_query_{newQuery()};
-  bool counted_ = false;  // the query has run
   std::vector<std::unique_ptr<ZexelMirror>> mirrors_;
   std::unique_ptr<FrameTarget> scratch_;
   int not_planar_ = 0;
@@ -254,7 +297,7 @@ MethodEntry zexelMethodEntry() {
       "reflectors inverse-warp a cube map of colour and distance";
   entry.info.max_order = 1;
   entry.info.counters = {"zexel_captures", "zexel_cube_captures"};
-  entry.info.frame_stats = {"zexels_warped", "exposed_fraction"};
+  entry.info.frame_stats = {"zexels_warped", "exposed_fraction", "zexel_resolve_passes"};
   entry.info.params = {
       ParamSpec::integer("zexel-size", 16, 65536, 512,
                          "side of each depth-preserving reflection map, in zexels (at most the "
@@ -289,7 +332,13 @@ MethodEntry zexelMethodEntry() {
       ParamSpec::real("zexel-depth-tolerance", 0.0, 100.0, 2.0,
                       "zexels landing on a pixel within this many percent of the nearest's "
                       "distance are blended by their splat weights (surface splatting); 0: the "
-                      "nearest only, the paper")};
+                      "nearest only, the paper"),
+      ParamSpec::choice("zexel-resolve", {"auto", "pass", "mirror"}, "auto",
+                        "where the splats covering a mirror pixel are blended: pass, a compute "
+                        "pass over the mirror's screen rectangle before its draw (each cell "
+                        "fetched once for three pixels); mirror, the mirror's own shader (its "
+                        "visible pixels only); auto: the pass while the rectangle holds at most "
+                        "twice the pixels the mirror showed the frame before")};
   for (const ParamSpec& p : ZexelCurvedReflectors::params()) entry.info.params.push_back(p);
   entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
     return std::make_unique<ZexelMethod>(setup);

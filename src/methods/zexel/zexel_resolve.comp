@@ -10,9 +10,6 @@
 // array of cells each cost more than the blend's arithmetic itself). Elsewhere (larger or
 // magnification-sized splats, --ssaa) an invocation resolves one pixel by the gather's loop.
 //
-// The exposures (no splat covers the pixel) are listed for the fill (zexel_fill.comp), with the
-// number of its work groups.
-//
 // Defined when the program is built: ZEXEL_REACH and ZEXEL_ALL_COVER (zexel_gather's reach and
 // all_cover).
 #include "render/shaders/common.glsl"
@@ -24,14 +21,10 @@ layout(local_size_x = MIRAGE_ZEXEL_RESOLVE_GROUP, local_size_y = MIRAGE_ZEXEL_RE
 layout(binding = MIRAGE_UNIT_ZEXEL_KEYS) uniform usamplerBuffer u_keys;
 layout(binding = MIRAGE_UNIT_ZEXEL_CELLS) uniform usamplerBuffer u_cells;  // x: in u_keys
 layout(binding = MIRAGE_IMAGE_ZEXEL_RESOLVED, rgba32f) uniform writeonly imageBuffer u_resolved;
-layout(std430, binding = MIRAGE_BIND_ZEXEL_EXPOSURES) buffer ExposureBlock {
-  uint exposures[];  // MIRAGE_ZEXEL_EXPOSURES_HEADER words, then the pixels
-};
 
 uniform ivec4 u_rect;       // the mirror's pixels lie in [xy, zw): one resolved texel each
 uniform int u_margin;       // cells kept around them (zexelCellMargin)
 uniform float u_tolerance;  // the blend's relative depth tolerance
-uniform int u_fill;         // 0: no fill (exposures are not listed)
 
 // The cell of frame pixel `pixel`; empty beyond the cells kept (a strip at the rectangle's far
 // edge looks there).
@@ -44,14 +37,7 @@ uvec4 zexel_cell_at(ivec2 pixel) {
 #include "methods/zexel/zexel_gather_shared.h"
 
 void resolve(ivec2 pixel, vec4 seen) {
-  seen.a = zexel_resolved_alpha(seen.a);
   imageStore(u_resolved, (pixel.y - u_rect.y) * (u_rect.z - u_rect.x) + pixel.x - u_rect.x, seen);
-  if (u_fill == 0 || !zexel_resolved_exposed(seen.a)) return;
-  uint slot = atomicAdd(exposures[3], 1u);
-  exposures[MIRAGE_ZEXEL_EXPOSURES_HEADER + slot] = uint(pixel.x) | (uint(pixel.y) << 16);
-  // Slots are handed out in order, so one in a group's size starts a group: the fill's dispatch
-  // counts ceil(exposures / group) groups.
-  if (slot % uint(MIRAGE_ZEXEL_FILL_GROUP) == 0u) atomicAdd(exposures[0], 1u);
 }
 
 #if ZEXEL_REACH == 1

@@ -19,38 +19,21 @@ ZexelResolvePass::ZexelResolvePass(const ZexelSplatOptions& sizes)
       resolve_(gpu::Program::compute(
           "methods/zexel/zexel_resolve.comp",
           {"ZEXEL_REACH " + std::to_string(zexelSplatReach(sizes)),
-           std::string("ZEXEL_ALL_COVER ") + (zexelSplatsAllCover(sizes) ? "1" : "0")})),
-      fill_(gpu::Program::compute("methods/zexel/zexel_fill.comp")) {}
+           std::string("ZEXEL_ALL_COVER ") + (zexelSplatsAllCover(sizes) ? "1" : "0")})) {}
 
-void ZexelResolvePass::run(const ZexelSplatOptions& splats, int fill,
-                           const ZexelWarpTarget& target) const {
+void ZexelResolvePass::run(const ZexelSplatOptions& splats, const ZexelWarpTarget& target) const {
   const ivec4 r = splats.rect;
   if (r.z <= r.x || r.w <= r.y) return;
   target.bindTexels();
   target.bindResolvedImage();
-  target.clearExposures();
   resolve_.set("u_rect", r);
   resolve_.set("u_margin", zexelCellMargin(splats));
   resolve_.set("u_tolerance", splats.tolerance);
-  resolve_.set("u_fill", fill);
   const int group = MIRAGE_ZEXEL_RESOLVE_GROUP, across = group * strip(r.z - r.x);
   if (window_) resolve_.set("u_strip", across / group);
   resolve_.use();
   glDispatchCompute(GLuint((r.z - r.x + across - 1) / across),
                     GLuint((r.w - r.y + group - 1) / group), 1);
-  if (fill > 0) {
-    // The fill reads the list and its dispatch, and overwrites the resolve's exposed texels.
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT |
-                    GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    fill_.set("u_fill", fill);
-    fill_.set("u_unit", splats.unit);
-    fill_.set("u_rect", r);
-    fill_.set("u_margin", zexelCellMargin(splats));
-    fill_.use();
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, target.exposures().id());
-    glDispatchComputeIndirect(0);
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-  }
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 

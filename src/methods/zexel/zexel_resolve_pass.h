@@ -1,6 +1,6 @@
 // What a planar mirror's pixels show this frame, from the cells its warp left: the resolve
-// (zexel_resolve.comp: the blend of the splats covering each pixel of the mirror's rectangle) and
-// the fill of the exposures it lists (zexel_fill.comp), before the mirror is drawn.
+// (zexel_resolve.comp: the blend of the splats covering each pixel of the mirror's rectangle),
+// before the mirror is drawn (whose shader fills the exposures among its visible pixels).
 #pragma once
 
 #include "gpu/program.h"
@@ -13,9 +13,8 @@ class ZexelResolvePass {
   // Programs for splats of `sizes` (ZexelSplatOptions::splat and unit).
   explicit ZexelResolvePass(const ZexelSplatOptions& sizes);
 
-  // Resolves `target`'s cells for `splats`' rectangle and fills its exposures from the first
-  // zexels met within `fill` output pixels (0: no fill).
-  void run(const ZexelSplatOptions& splats, int fill, const ZexelWarpTarget& target) const;
+  // Resolves `target`'s cells for `splats`' rectangle.
+  void run(const ZexelSplatOptions& splats, const ZexelWarpTarget& target) const;
 
   // Pixels of a row of `width` an invocation of the resolve handles: a strip of at most 16 where
   // splats reach one pixel (its sliding window of cells), the strips of a row as even as they
@@ -24,7 +23,7 @@ class ZexelResolvePass {
 
  private:
   bool window_;
-  gpu::Program resolve_, fill_;
+  gpu::Program resolve_;
 };
 
 }  // namespace mirage

@@ -11,7 +11,6 @@
 #define MIRAGE_BIND_ZEXEL_CELLS 5       // uvec4[2] a cell: its words but the key
 #define MIRAGE_BIND_ZEXEL_COUNTERS 6    // uint[MIRAGE_ZEXEL_COUNTERS], below
 #define MIRAGE_BIND_ZEXEL_TILES 7       // uvec2 per tile warped: its coordinates, its spacing
-#define MIRAGE_BIND_ZEXEL_EXPOSURES 8   // the resolve's exposures for the fill, below
 #define MIRAGE_UNIT_ZEXEL_MAPS 4        // sampler2DArray: every map of the mirror, mip levels
 #define MIRAGE_UNIT_ZEXEL_KEYS 5        // usamplerBuffer r32ui: the keys, as the mirror reads them
 #define MIRAGE_UNIT_ZEXEL_CELLS 6       // usamplerBuffer rgba32ui: the cells, likewise
@@ -25,15 +24,9 @@
 #define MIRAGE_ZEXEL_COUNTERS 1
 #define MIRAGE_ZEXEL_COUNT_EXPOSED 0
 
-#define MIRAGE_ZEXEL_GROUP 64         // invocations per warp work group (one zexel each)
-#define MIRAGE_ZEXEL_RESOLVE_GROUP 8  // the resolve's work groups: 8 x 8 invocations
-#define MIRAGE_ZEXEL_FILL_GROUP 64    // the fill's work groups: an exposure an invocation
-
-// The exposures the resolve leaves for the fill (MIRAGE_BIND_ZEXEL_EXPOSURES): the fill's
-// dispatch (its work groups, 1, 1: glDispatchComputeIndirect's arguments), how many exposures,
-// and each one's pixel, x | y << 16.
-#define MIRAGE_ZEXEL_EXPOSURES_HEADER 4  // uints before the pixels
-#define MIRAGE_ZEXEL_MAX_SPLAT 8         // the largest magnification-sized splat, in pixels
-#define MIRAGE_ZEXEL_EMPTY 0xFFFFFFFFu   // a pixel no zexel reached (an exposure)
+#define MIRAGE_ZEXEL_GROUP 64           // invocations per warp work group (one zexel each)
+#define MIRAGE_ZEXEL_RESOLVE_GROUP 8    // the resolve's work groups: 8 x 8 invocations
+#define MIRAGE_ZEXEL_MAX_SPLAT 8        // the largest magnification-sized splat, in pixels
+#define MIRAGE_ZEXEL_EMPTY 0xFFFFFFFFu  // a pixel no zexel reached (an exposure)
 
 #endif  // MIRAGE_METHODS_ZEXEL_ZEXEL_SHARED_H

@@ -188,24 +188,6 @@ SHARED_FN float zexel_cell_falloff(uvec4 c) {
   return unpackHalf2x16(c.w).y;
 }
 
-// What the resolve leaves a pixel (rgb, alpha): alpha the distance where splats cover it; where
-// none does (an exposure), ZEXEL_UNFILLED, or the negated distance of what the fill found there
-// (exact both ways, and the mirror still counts the pixel exposed). Distances are positive and at
-// most MISS_DISTANCE, so the marker lies below every negated one.
-SHARED_CONST float ZEXEL_UNFILLED = -3.0e38f;
-
-SHARED_FN float zexel_resolved_alpha(float gathered) {
-  return gathered < 0.0f ? ZEXEL_UNFILLED : gathered;
-}
-
-SHARED_FN bool zexel_resolved_exposed(float alpha) {
-  return alpha < 0.0f;
-}
-
-SHARED_FN bool zexel_resolved_filled(float alpha) {
-  return alpha < 0.0f && alpha > ZEXEL_UNFILLED;
-}
-
 // Whether a splat of side `side` landed at `landed` covers pixel `pixel`.
 SHARED_FN bool zexel_covers(vec2 landed, int side, ivec2 pixel) {
   ivec2 d = pixel - zexel_splat_origin(landed, side);

@@ -29,7 +29,6 @@ void ZexelWarpTarget::resize(ivec2 size, const ZexelSplatOptions& splats, bool h
   if (pixels > resolved_count_) {
     resolved_ = gpu::Buffer(pixels * sizeof(vec4));
     resolved_texels_ = gpu::Texture::overBuffer(GL_RGBA32F, resolved_);
-    exposures_ = gpu::Buffer((MIRAGE_ZEXEL_EXPOSURES_HEADER + pixels) * sizeof(uint32_t));
     resolved_count_ = pixels;
   }
   if (size != size_) history_ = gpu::Texture();
@@ -59,13 +58,6 @@ void ZexelWarpTarget::bindTexels() const {
 void ZexelWarpTarget::bindResolvedImage() const {
   glBindImageTexture(MIRAGE_IMAGE_ZEXEL_RESOLVED, resolved_texels_.id(), 0, GL_FALSE, 0,
                      GL_WRITE_ONLY, GL_RGBA32F);
-}
-
-void ZexelWarpTarget::clearExposures() const {
-  // No work groups (yet), 1, 1; no exposures.
-  const uint32_t header[MIRAGE_ZEXEL_EXPOSURES_HEADER] = {0u, 1u, 1u, 0u};
-  glNamedBufferSubData(exposures_.id(), 0, sizeof(header), header);
-  exposures_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_ZEXEL_EXPOSURES);
 }
 
 void ZexelWarpTarget::bind() const {

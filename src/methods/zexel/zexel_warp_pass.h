@@ -27,7 +27,7 @@ struct ZexelWarpJob {
 void planZexelJob(ZexelWarpJob& job, const View& output);
 
 // A mirror's cells (zexelCellCount: their keys apart, the rest), the tiles of its warp, what its
-// rectangle's pixels show (the resolve's texels and the exposures it lists), and its last image
+// rectangle's pixels show (the resolve's texels), and its last image
 // (the no-clear option, frame-sized).
 class ZexelWarpTarget {
  public:
@@ -43,9 +43,6 @@ class ZexelWarpTarget {
   // from the rectangle's lowest), as the image it writes and as a buffer.
   void bindResolvedImage() const;
   const gpu::Buffer& resolved() const { return resolved_; }
-  // The list of exposures the resolve leaves the fill (zexel_shared.h), emptied and bound.
-  void clearExposures() const;
-  const gpu::Buffer& exposures() const { return exposures_; }
   gpu::Buffer& keys() { return keys_; }
   gpu::Buffer& cells() { return cells_; }
   // The tiles' words of a plan, uploaded.
@@ -54,7 +51,7 @@ class ZexelWarpTarget {
  private:
   ivec2 size_{0};
   size_t cells_count_ = 0, resolved_count_ = 0;
-  gpu::Buffer keys_, cells_, tiles_, resolved_, exposures_;
+  gpu::Buffer keys_, cells_, tiles_, resolved_;
   gpu::Texture keys_texels_, cells_texels_, resolved_texels_, history_;
 };
 
