@@ -21,9 +21,10 @@ ZexelResolvePass::ZexelResolvePass(const ZexelSplatOptions& sizes)
           {"ZEXEL_REACH " + std::to_string(zexelSplatReach(sizes)),
            std::string("ZEXEL_ALL_COVER ") + (zexelSplatsAllCover(sizes) ? "1" : "0")})) {}
 
-void ZexelResolvePass::run(const ZexelSplatOptions& splats, const ZexelWarpTarget& target) const {
+void ZexelResolvePass::run(const ZexelSplatOptions& splats, ZexelWarpTarget& target) const {
   const ivec4 r = splats.rect;
   if (r.z <= r.x || r.w <= r.y) return;
+  target.reserveResolved(r);
   target.bindTexels();
   target.bindResolvedImage();
   resolve_.set("u_rect", r);

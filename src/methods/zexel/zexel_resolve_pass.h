@@ -14,7 +14,7 @@ class ZexelResolvePass {
   explicit ZexelResolvePass(const ZexelSplatOptions& sizes);
 
   // Resolves `target`'s cells for `splats`' rectangle.
-  void run(const ZexelSplatOptions& splats, const ZexelWarpTarget& target) const;
+  void run(const ZexelSplatOptions& splats, ZexelWarpTarget& target) const;
 
   // Pixels of a row of `width` an invocation of the resolve handles: a strip of at most 16 where
   // splats reach one pixel (its sliding window of cells), the strips of a row as even as they

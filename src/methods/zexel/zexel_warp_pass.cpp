@@ -24,13 +24,6 @@ void ZexelWarpTarget::resize(ivec2 size, const ZexelSplatOptions& splats, bool h
     cells_texels_ = gpu::Texture::overBuffer(GL_RGBA32UI, cells_);
     cells_count_ = cells;
   }
-  const size_t pixels =
-      size_t(splats.rect.z - splats.rect.x) * size_t(splats.rect.w - splats.rect.y);
-  if (pixels > resolved_count_) {
-    resolved_ = gpu::Buffer(pixels * sizeof(vec4));
-    resolved_texels_ = gpu::Texture::overBuffer(GL_RGBA32F, resolved_);
-    resolved_count_ = pixels;
-  }
   if (size != size_) history_ = gpu::Texture();
   if (history && history_.id() == 0) {
     history_ = gpu::Texture::create2D(GL_RGBA32F, size.x, size.y);
@@ -49,10 +42,19 @@ void ZexelWarpTarget::clear(size_t cells) const {
 void ZexelWarpTarget::bindTexels() const {
   keys_texels_.bind(MIRAGE_UNIT_ZEXEL_KEYS);
   cells_texels_.bind(MIRAGE_UNIT_ZEXEL_CELLS);
-  resolved_texels_.bind(MIRAGE_UNIT_ZEXEL_RESOLVED);
+  if (resolved_texels_.id() != 0) resolved_texels_.bind(MIRAGE_UNIT_ZEXEL_RESOLVED);
   if (history_.id() != 0)
     glBindImageTexture(MIRAGE_IMAGE_ZEXEL_HISTORY, history_.id(), 0, GL_FALSE, 0, GL_READ_WRITE,
                        GL_RGBA32F);
+}
+
+void ZexelWarpTarget::reserveResolved(const ivec4& rect) {
+  // Grown, never shrunk, and only for a mirror the resolve pass serves.
+  const size_t pixels = size_t(rect.z - rect.x) * size_t(rect.w - rect.y);
+  if (pixels <= resolved_count_) return;
+  resolved_ = gpu::Buffer(pixels * sizeof(vec4));
+  resolved_texels_ = gpu::Texture::overBuffer(GL_RGBA32F, resolved_);
+  resolved_count_ = pixels;
 }
 
 void ZexelWarpTarget::bindResolvedImage() const {

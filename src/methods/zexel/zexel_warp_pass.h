@@ -27,8 +27,8 @@ struct ZexelWarpJob {
 void planZexelJob(ZexelWarpJob& job, const View& output);
 
 // A mirror's cells (zexelCellCount: their keys apart, the rest), the tiles of its warp, what its
-// rectangle's pixels show (the resolve's texels), and its last image
-// (the no-clear option, frame-sized).
+// rectangle's pixels show (the resolve's texels), and its last image (the no-clear option,
+// frame-sized).
 class ZexelWarpTarget {
  public:
   void resize(ivec2 size, const ZexelSplatOptions& splats, bool history);
@@ -39,8 +39,10 @@ class ZexelWarpTarget {
   // The keys, cells and resolved texels as buffer textures at their units and the history image
   // (the mirror).
   void bindTexels() const;
-  // The resolve's output, one texel a pixel of the mirror's rectangle (zexel_resolve.comp; rows
-  // from the rectangle's lowest), as the image it writes and as a buffer.
+  // The resolve's output, one texel a pixel of the mirror's rectangle `rect` (zexel_resolve.comp;
+  // rows from the rectangle's lowest): made to hold it, as the image the resolve writes, and as
+  // a buffer.
+  void reserveResolved(const ivec4& rect);
   void bindResolvedImage() const;
   const gpu::Buffer& resolved() const { return resolved_; }
   gpu::Buffer& keys() { return keys_; }
@@ -55,8 +57,8 @@ class ZexelWarpTarget {
   gpu::Texture keys_texels_, cells_texels_, resolved_texels_, history_;
 };
 
-// The GPU warper: per pass (nearest distances, then the sums), chosen map and level of its plan,
-// one dispatch of an invocation per zexel.
+// The GPU warper: per pass (nearest distances, then the cells) and chosen map, one dispatch of an
+// invocation per zexel of every level of its plan.
 void warpOnGpu(const gpu::Program& program, const ZexelWarpJob& job, const View& output,
                ZexelWarpTarget& target);
 
