@@ -2,10 +2,10 @@
 // map, every level they warp in one dispatch (zexel_tiles.h plans them, finest level first): it
 // moves the zexel by McMillan's warp (zexel_warp_shared.h) into the image seen from the mirrored
 // eye and leaves it in the cell of the pixel it lands in, with its splat's side and kernel
-// (zexel_splat_shared.h; the resolve gathers the splats covering each pixel). Two passes make each cell's choice exact without
-// 64-bit atomics: the first keeps the nearest landed distance (atomicMin on its float bits), the
-// second writes the rest of the cell for a zexel whose distance is the one kept (a tie writes
-// either). Zexels that saw nothing are directions (δ = 0) and land infinitely far: where they are
+// (zexel_splat_shared.h; the resolve gathers the splats covering each pixel). Two passes make
+// each cell's choice exact without 64-bit atomics: the first keeps the nearest landed distance
+// (atomicMin on its float bits), the second writes the rest of the cell for a zexel whose
+// distance is the one kept (a tie writes either). Zexels that saw nothing are directions (δ = 0) and land infinitely far: where they are
 // in front, the mirror shows the sky the reference camera saw.
 #include "render/shaders/common.glsl"
 #include "methods/zexel/zexel_shared.h"
@@ -43,7 +43,8 @@ void splat(ivec2 texel, int level, mat3 p, float sigma) {
   vec4 zexel = texelFetch(u_maps, ivec3(texel, u_layer), level);
   if (!(zexel.a > 0.0f)) return;  // never written: outside every capture
   vec2 xi = vec2(texel) + 0.5f;
-  float delta = zexel.a >= 0.5f * MISS_DISTANCE ? 0.0f : zexel_disparity_from_distance(p, xi, zexel.a);
+  bool missed = zexel.a >= 0.5f * MISS_DISTANCE;
+  float delta = missed ? 0.0f : zexel_disparity_from_distance(p, xi, zexel.a);
   vec3 o = zexel_warp(mat3(u_po_inverse), p, u_ci, u_co, delta, xi);
   if (!(o.z > 0.0f)) return;
   float distance = zexel_distance_from(p, u_ci, xi, delta, u_co, MISS_DISTANCE);
