@@ -8,11 +8,11 @@ namespace mirage::app {
 
 // Made first thing in main (the tool's and the tests'); its destructor, as main returns, waits
 // until every TBB worker thread has ended. Left to themselves the workers end during exit(),
-// after main, at the same time as LeakSanitizer's check of the process (sanitizer builds): its
-// tracer then read the stacks of a worker that was tearing them down and crashed ("Tracer caught
-// signal 11"), failing a run that had leaked nothing. Joined here, no thread is ending when the
-// check runs. Where TBB cannot wait (a thread pool still in use), it says so in a debug line and
-// the workers end as before.
+// after main, at the same time as LeakSanitizer's check of the process (sanitizer builds), which
+// then reads the stacks of threads that are tearing them down. Joined here, no thread is ending
+// when the check runs (the check's crashes in runs that leaked nothing had another cause:
+// sanitizer_defaults.cpp). Where TBB cannot wait (a thread pool still in use), it says so in a
+// debug line and the workers end as before.
 class WorkerThreadsJoined {
  public:
   WorkerThreadsJoined();
