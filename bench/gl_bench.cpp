@@ -14,6 +14,7 @@
 #include "gpu/context.h"
 #include "gpu/program.h"
 #include "methods/frame.h"
+#include "render/base_colour.h"
 #include "render/cube_capture.h"
 #include "render/frame_target.h"
 #include "scene/builtin_scenes.h"
@@ -31,7 +32,7 @@ struct GlScene {
   FrameRenderer renderer{scene, kSize};
   View view{scene.camera(), kSize};
   FrameSettings settings{2, true};
-  gpu::Program base = gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag");
+  gpu::Program base = baseColourProgram();
 };
 
 GlScene& glScene() {

@@ -35,7 +35,8 @@ void addSceneOptions(CLI::App* app, SceneArgs& args) {
 
 void addFrameOptions(CLI::App* app, FrameArgs& args) {
   app->add_option("--size", args.size, "image size WxH (1..16384 each)")->capture_default_str();
-  app->add_option("--order", args.order, "reflection order K (0..16; 0 = no reflections)")
+  app->add_option("--order", args.order,
+                  fmt::format("reflection order K (0..{}; 0 = no reflections)", kMaxOrder))
       ->capture_default_str();
   app->add_option("--mip", args.mip, "mip-mapped reflection lookups: on|off")
       ->capture_default_str();
@@ -90,7 +91,8 @@ Scene loadSceneFromArgs(SceneArgs& args) {
 }
 
 FrameSettings frameSettings(const FrameArgs& args) {
-  if (args.order < 0 || args.order > 16) throwInput("--order {}: allowed 0..16", args.order);
+  if (args.order < 0 || args.order > kMaxOrder)
+    throwInput("--order {}: allowed 0..{}", args.order, kMaxOrder);
   if (args.mip != "on" && args.mip != "off") throwInput("--mip {}: allowed on|off", args.mip);
   if (args.ssaa < 1 || args.ssaa > kMaxSsaa)
     throwInput("--ssaa {}: allowed 1..{} (sub-pixels per output pixel along each axis)", args.ssaa,

@@ -9,8 +9,8 @@
 #include <CLI/CLI.hpp>
 
 #include "core/display.h"
+#include "core/frame_settings.h"
 #include "gpu/context.h"
-#include "render/scene_passes.h"
 #include "scene/scene_loader.h"
 
 namespace mirage::app {

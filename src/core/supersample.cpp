@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 
+#include "core/check.h"
+
 namespace mirage {
 
 namespace {
@@ -25,6 +27,7 @@ uint32_t blockMajority(const IdImage& ids, int n, int x, int y) {
 }  // namespace
 
 uint32_t mostFrequent(std::span<uint32_t> values) {
+  MIRAGE_CHECK(!values.empty());
   std::sort(values.begin(), values.end());
   uint32_t best = values.front();
   size_t best_run = 0;

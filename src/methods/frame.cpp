@@ -19,8 +19,8 @@ std::unique_ptr<Method> FrameRenderer::createMethod(const std::string& name,
                                                     const FrameSettings& settings) {
   const MethodEntry& entry = findMethod(name);
   if (settings.order < entry.info.min_order)
-    throwInput("method '{}': --order {} is out of range (allowed: {}..16)", name, settings.order,
-               entry.info.min_order);
+    throwInput("method '{}': --order {} is out of range (allowed: {}..{})", name, settings.order,
+               entry.info.min_order, kMaxOrder);
   std::map<std::string, std::string> own;
   for (const ParamSpec& spec : entry.info.params)
     if (auto it = given.find(spec.name); it != given.end()) own[spec.name] = it->second;

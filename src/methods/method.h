@@ -1,11 +1,13 @@
-// The interface every reflection method implements (DESIGN §2), and the registry through which
-// the tool, the viewer, the tests and the benchmarks find them. A method lives in its own folder
-// under src/methods/; nothing outside reaches into it except through this header.
+// The interface every reflection method implements (docs/architecture.md, "Methods"), and the
+// registry through which the tool, the viewer, the tests and the benchmarks find them. A method
+// lives in its own folder under src/methods/; nothing outside reaches into it except through
+// this header.
 #pragma once
 
 #include <functional>
 #include <map>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -106,7 +108,11 @@ std::vector<std::string> methodNames();
 const MethodEntry& findMethod(const std::string& name);
 // "all" or a comma-separated list, each name checked.
 std::vector<std::string> parseMethodList(const std::string& list);
-// Every parameter of every method, once per name (for the command line and the viewer).
+// Every parameter of `entries`, once per name, in the order first listed; methods that share a
+// parameter must declare it alike (name, type, range, default, choices, help), else
+// std::logic_error names both methods: a programming error, not an input error.
+std::vector<ParamSpec> mergedParams(std::span<const MethodEntry> entries);
+// mergedParams of the registry (for the command line and the viewer).
 std::vector<ParamSpec> allMethodParams();
 
 }  // namespace mirage

@@ -25,6 +25,7 @@ struct ParamSpec {
                           std::string help);
   // "1..4096", "0..1e+06", "on|off".
   std::string rangeText() const;
+  bool operator==(const ParamSpec&) const = default;
 };
 
 // Validated parameter values by name, with defaults filled in.

@@ -1,5 +1,6 @@
 // The method registry: adding a method is one line here (plus its folder).
 #include <algorithm>
+#include <stdexcept>
 
 #include <fmt/ranges.h>
 
@@ -74,15 +75,28 @@ std::map<std::string, double> frameCounts(const MethodInfo& info,
   return out;
 }
 
-std::vector<ParamSpec> allMethodParams() {
+std::vector<ParamSpec> mergedParams(std::span<const MethodEntry> entries) {
   std::vector<ParamSpec> out;
-  for (const MethodEntry& e : methodRegistry())
+  std::vector<std::string> declared_by;  // out[i]'s first method
+  for (const MethodEntry& e : entries)
     for (const ParamSpec& p : e.info.params) {
-      bool seen = false;
-      for (const ParamSpec& q : out) seen = seen || q.name == p.name;
-      if (!seen) out.push_back(p);
+      auto same_name = [&](const ParamSpec& q) { return q.name == p.name; };
+      auto it = std::find_if(out.begin(), out.end(), same_name);
+      if (it == out.end()) {
+        out.push_back(p);
+        declared_by.push_back(e.info.name);
+      } else if (!(*it == p)) {
+        throw std::logic_error(fmt::format(
+            "methods {} and {} declare --{} differently (a parameter of one name is one spec: "
+            "methods/probe_params.h)",
+            declared_by[size_t(it - out.begin())], e.info.name, p.name));
+      }
     }
   return out;
+}
+
+std::vector<ParamSpec> allMethodParams() {
+  return mergedParams(methodRegistry());
 }
 
 }  // namespace mirage

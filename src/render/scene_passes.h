@@ -7,22 +7,13 @@
 #include <span>
 
 #include "core/camera.h"
+#include "core/frame_settings.h"
 #include "gpu/buffer.h"
 #include "gpu/program.h"
 #include "render/gpu_scene.h"
 #include "shading/gpu_types.h"
 
 namespace mirage {
-
-struct FrameSettings {
-  int order = 2;    // reflection order K
-  bool mip = true;  // mip-mapped (filtered) reflection lookups
-  // Frame pixels per output pixel along each axis (--ssaa N: the frame is rendered N times wider
-  // and higher, then box-filtered down). A method's sizes given in output pixels (splats, search
-  // radii, steps) are multiplied by it, so that the technique does at N x N what it does at
-  // native resolution, only sampled more finely.
-  int pixel_scale = 1;
-};
 
 shading::FrameData makeFrameData(const View& view, const Scene& scene, float time,
                                  const FrameSettings& settings, float env_max_lod);

@@ -65,7 +65,8 @@ void methodSection(ViewerState& state) {
       }
     ImGui::EndCombo();
   }
-  if (ImGui::SliderInt("order K", &state.settings.order, 0, 16, "%d", ImGuiSliderFlags_AlwaysClamp))
+  if (ImGui::SliderInt("order K", &state.settings.order, 0, kMaxOrder, "%d",
+                       ImGuiSliderFlags_AlwaysClamp))
     state.method_changed = true;
   if (ImGui::Checkbox("mip-mapped lookups", &state.settings.mip)) state.method_changed = true;
   const std::vector<ParamSpec>& params = findMethod(state.method).info.params;

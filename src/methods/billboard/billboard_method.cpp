@@ -1,6 +1,7 @@
 #include "methods/billboard/billboard_method.h"
 
 #include "methods/impostor/billboard_stage.h"
+#include "render/base_colour.h"
 
 namespace mirage {
 
@@ -14,8 +15,7 @@ class BillboardMethod final : public Method {
         last_bounce_reflective_(setup.params.text("last-bounce") == "all"),
         program_(gpu::Program::graphics("render/shaders/scene.vert",
                                         "methods/billboard/billboard.frag")),
-        base_program_(
-            gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")) {}
+        base_program_(baseColourProgram()) {}
 
   const MethodInfo& info() const override { return info_; }
 

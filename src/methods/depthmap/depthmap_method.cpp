@@ -6,6 +6,7 @@
 #include "methods/depthmap/depthmap_capture.h"
 #include "methods/depthmap/depthmap_shared.h"
 #include "methods/impostor/billboard_stage.h"
+#include "render/base_colour.h"
 
 namespace mirage {
 
@@ -53,8 +54,7 @@ class DepthMapMethod final : public Method {
         program_(gpu::Program::graphics("render/shaders/scene.vert",
                                         "methods/depthmap/depthmap.frag",
                                         shaderDefines(specs_, setup.params))),
-        base_program_(
-            gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")) {}
+        base_program_(baseColourProgram()) {}
 
   const MethodInfo& info() const override { return info_; }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "gpu/buffer.h"
+#include "methods/probe_params.h"
+#include "render/base_colour.h"
 #include "render/cube_capture.h"
 
 namespace mirage {
@@ -27,8 +29,7 @@ class EnvmapMethod final : public Method {
         sphere_proxy_(variant == Variant::kBox && setup.params.text("proxy") == "sphere"),
         program_(gpu::Program::graphics("render/shaders/scene.vert", "methods/envmap/envmap.frag",
                                         shaderDefines(variant))),
-        base_program_(
-            gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")),
+        base_program_(baseColourProgram()),
         diffuse_(setup.gpu.scene().diffuseInstances()) {}
 
   const MethodInfo& info() const override { return info_; }
@@ -160,8 +161,7 @@ MethodEntry envmapMethodEntry() {
   entry.info.counters = {"cube_captures", "capture_passes"};
   entry.info.description =
       "a cube map captured at each reflector's centre, looked up by direction (reflection probe)";
-  entry.info.params = {ParamSpec::integer("envmap-size", 8, 2048, 256,
-                                          "face size of each reflector's cube map, in texels")};
+  entry.info.params = {envmapSizeParam()};
   entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
     return std::make_unique<EnvmapMethod>(setup, Variant::kProbes);
   };
@@ -175,12 +175,7 @@ MethodEntry envmapBoxMethodEntry() {
   entry.info.description =
       "the reflection probes looked up through a box proxy of the room (parallax-corrected cube "
       "map)";
-  entry.info.params = {
-      ParamSpec::integer("envmap-size", 8, 2048, 256,
-                         "face size of each reflector's cube map, in texels"),
-      ParamSpec::choice("proxy", {"box", "sphere"}, "box",
-                        "envmap-box's proxy of the room: its box, or the box's circumscribed "
-                        "sphere (Bjorke)")};
+  entry.info.params = {envmapSizeParam(), probeProxyParam()};
   entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
     return std::make_unique<EnvmapMethod>(setup, Variant::kBox);
   };

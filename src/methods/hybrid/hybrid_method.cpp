@@ -11,6 +11,8 @@
 #include "methods/hybrid/kd_gpu_cull.h"
 #include "methods/hybrid/point_store.h"
 #include "methods/hybrid/splat_visibility.h"
+#include "methods/probe_params.h"
+#include "render/base_colour.h"
 #include "render/cube_capture.h"
 
 namespace mirage {
@@ -66,8 +68,7 @@ class HybridMethod final : public Method {
             gpu::Program::graphics("render/shaders/scene.vert", "methods/hybrid/hybrid.frag")),
         id_program_(
             gpu::Program::graphics("render/shaders/scene.vert", "methods/hybrid/triangle_id.frag")),
-        base_program_(
-            gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")) {
+        base_program_(baseColourProgram()) {
     const Scene& scene = setup.gpu.scene();
     reflectors_ = scene.reflectorInstances();
     for (int i = 0; i < int(scene.instances.size()); ++i)
@@ -398,8 +399,7 @@ MethodEntry hybridMethodEntry() {
       ParamSpec::real("hybrid-lod", 0.0, 1.0e6, 0.0,
                       "level of detail: project at most this many points per visible pixel of "
                       "a reflector triangle (a uniform subsample with larger splats; 0: all)"),
-      ParamSpec::integer("envmap-size", 8, 2048, 256,
-                         "face size of each reflector's background cube map, in texels")};
+      envmapSizeParam()};
   entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
     return std::make_unique<HybridMethod>(setup);
   };

@@ -1,4 +1,5 @@
 #include "methods/impostor/billboard_stage.h"
+#include "methods/probe_params.h"
 
 #include <span>
 
@@ -19,8 +20,7 @@ std::vector<ParamSpec> billboardStageParams() {
           ParamSpec::real("morph-height", 0.0, 1.0e6, 0.0,
                           "height of the transition walls that morph the ground billboard into the "
                           "environment (scene units; 0 = off)"),
-          ParamSpec::integer("envmap-size", 8, 2048, 256,
-                             "face size of each reflector's cube map, in texels")};
+          envmapSizeParam()};
 }
 
 BillboardStageOptions billboardStageOptions(const ParamValues& params) {

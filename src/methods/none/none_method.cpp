@@ -1,4 +1,5 @@
 #include "methods/none/none_method.h"
+#include "render/base_colour.h"
 
 namespace mirage {
 
@@ -6,9 +7,7 @@ namespace {
 
 class NoneMethod final : public Method {
  public:
-  explicit NoneMethod(const MethodInfo& info)
-      : info_(info),
-        program_(gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")) {}
+  explicit NoneMethod(const MethodInfo& info) : info_(info), program_(baseColourProgram()) {}
 
   const MethodInfo& info() const override { return info_; }
   void update(FrameContext&) override {}

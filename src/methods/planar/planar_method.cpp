@@ -2,6 +2,7 @@
 
 #include <memory>
 
+#include "render/base_colour.h"
 #include "render/mirror_images.h"
 
 namespace mirage {
@@ -14,8 +15,7 @@ class PlanarMethod final : public Method {
       : info_(setup.info),
         program_(gpu::Program::graphics("render/shaders/scene.vert",
                                         "render/shaders/mirror_image.frag")),
-        base_program_(
-            gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")),
+        base_program_(baseColourProgram()),
         planar_(planarReflectors(setup.gpu.scene(), &not_planar_, "planar")) {}
 
   const MethodInfo& info() const override { return info_; }

@@ -5,7 +5,7 @@
 
 #include "gpu/buffer.h"
 #include "gpu/framebuffer.h"
-#include "methods/envmap/envmap_method.h"
+#include "methods/probe_params.h"
 #include "methods/ssr/hiz_pyramid.h"
 #include "methods/ssr/ssr_shared.h"
 
@@ -190,9 +190,9 @@ MethodEntry ssrMethodEntry() {
                       "ssr: width of the fade to the fallback at the screen's edges, as a fraction "
                       "of its shorter side"),
       ParamSpec::choice("ssr-fallback", {"envmap", "envmap-box"}, "envmap-box",
-                        "ssr: the reflection probes shown where the screen has no data")};
-  // The fallback's own parameters (envmap-box's are a superset of envmap's).
-  for (const ParamSpec& p : envmapBoxMethodEntry().info.params) entry.info.params.push_back(p);
+                        "ssr: the reflection probes shown where the screen has no data"),
+      // The fallback's own parameters (envmap-box's, a superset of envmap's).
+      envmapSizeParam(), probeProxyParam()};
   entry.info.counters = {"cube_captures", "capture_passes"};
   entry.info.frame_stats = {"ssr_hit_fraction", "ssr_fallback_fraction"};
   entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {

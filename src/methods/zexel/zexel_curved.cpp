@@ -1,4 +1,5 @@
 #include "methods/zexel/zexel_curved.h"
+#include "render/base_colour.h"
 
 #include <algorithm>
 
@@ -22,7 +23,7 @@ ZexelCurvedReflectors::ZexelCurvedReflectors(const MethodSetup& setup)
       search_(zexelInverseSettings(size_, float(setup.params.real("zexel-curved-step")))),
       program_(
           gpu::Program::graphics("render/shaders/scene.vert", "methods/zexel/zexel_inverse.frag")),
-      base_program_(gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")),
+      base_program_(baseColourProgram()),
       diffuse_(setup.gpu.scene().diffuseInstances()) {
   const Scene& scene = setup.gpu.scene();
   const std::vector<int> planar = planarReflectors(scene);

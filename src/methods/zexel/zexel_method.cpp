@@ -12,6 +12,7 @@
 #include "methods/zexel/zexel_shared.h"
 #include "methods/zexel/zexel_splat_shared.h"
 #include "methods/zexel/zexel_warp_pass.h"
+#include "render/base_colour.h"
 #include "render/mirror_images.h"
 
 namespace mirage {
@@ -100,8 +101,7 @@ class ZexelMethod final : public Method {
         pyramid_program_(gpu::Program::compute("methods/zexel/zexel_pyramid.comp")),
         mirror_program_(mirrorProgram(splatSizes(splat_, pixel_scale_), false)),
         gather_program_(mirrorProgram(splatSizes(splat_, pixel_scale_), true)),
-        base_program_(
-            gpu::Program::graphics("render/shaders/scene.vert", "methods/none/none.frag")),
+        base_program_(baseColourProgram()),
         resolve_(splatSizes(splat_, pixel_scale_)),
         counters_(MIRAGE_ZEXEL_COUNTERS * sizeof(uint32_t)),
         curved_(setup) {

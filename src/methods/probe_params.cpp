@@ -1,0 +1,16 @@
+#include "methods/probe_params.h"
+
+namespace mirage {
+
+ParamSpec envmapSizeParam() {
+  return ParamSpec::integer("envmap-size", 8, 2048, 256,
+                            "face size of each reflector's cube map, in texels");
+}
+
+ParamSpec probeProxyParam() {
+  return ParamSpec::choice("proxy", {"box", "sphere"}, "box",
+                           "envmap-box's proxy of the room: its box, or the box's circumscribed "
+                           "sphere (Bjorke)");
+}
+
+}  // namespace mirage

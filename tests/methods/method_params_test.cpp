@@ -1,0 +1,65 @@
+// The methods' parameters as the command line and the viewer see them: a parameter that several
+// methods list (--envmap-size, --proxy) is one spec, and a registry whose methods declare one
+// name differently is refused rather than resolved by whichever method comes first.
+#include <map>
+#include <stdexcept>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "methods/method.h"
+
+namespace mirage {
+namespace {
+
+TEST(MethodParams, SameNamedParametersOfTheRegistryAreIdentical) {
+  std::map<std::string, std::pair<std::string, ParamSpec>> first;  // name -> (method, spec)
+  int shared = 0;
+  for (const MethodEntry& e : methodRegistry())
+    for (const ParamSpec& p : e.info.params) {
+      auto [it, inserted] = first.try_emplace(p.name, e.info.name, p);
+      if (inserted) continue;
+      ++shared;
+      const ParamSpec& q = it->second.second;
+      const std::string who = it->second.first + " and " + e.info.name + ": --" + p.name;
+      EXPECT_EQ(p.type, q.type) << who;
+      EXPECT_EQ(p.min, q.min) << who;
+      EXPECT_EQ(p.max, q.max) << who;
+      EXPECT_EQ(p.default_value, q.default_value) << who;
+      EXPECT_EQ(p.choices, q.choices) << who;
+      EXPECT_EQ(p.help, q.help) << who;
+    }
+  // envmap-size is listed by envmap, envmap-box, billboard, depthmap, hybrid and ssr; proxy by
+  // envmap-box and ssr: the check above compared something.
+  EXPECT_GE(shared, 6);
+  EXPECT_NO_THROW(allMethodParams());
+  EXPECT_EQ(allMethodParams().size(), first.size());
+}
+
+TEST(MethodParams, DifferingSpecsOfOneNameAreRefusedNamingBothMethods) {
+  auto entry = [](std::string name, ParamSpec spec) {
+    MethodEntry e;
+    e.info.name = std::move(name);
+    e.info.params = {std::move(spec)};
+    return e;
+  };
+  const std::vector<MethodEntry> alike = {
+      entry("a", ParamSpec::integer("size", 8, 2048, 256, "face size")),
+      entry("b", ParamSpec::integer("size", 8, 2048, 256, "face size"))};
+  EXPECT_EQ(mergedParams(alike).size(), 1u);
+
+  const std::vector<MethodEntry> differing = {
+      entry("a", ParamSpec::integer("size", 8, 2048, 256, "face size")),
+      entry("b", ParamSpec::integer("size", 8, 2048, 128, "face size"))};
+  try {
+    mergedParams(differing);
+    FAIL() << "a second, different spec of --size was accepted";
+  } catch (const std::logic_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("methods a and b"), std::string::npos) << what;
+    EXPECT_NE(what.find("--size"), std::string::npos) << what;
+  }
+}
+
+}  // namespace
+}  // namespace mirage
