@@ -1,5 +1,6 @@
-// The output transform of DESIGN §3 (exposure, tone map, sRGB) applied to whole images, with the
-// per-pixel function of shading/tonemap.h that a display shader would run.
+// The output transform of the shading model (docs/architecture.md, "One shading model":
+// exposure, tone map, sRGB) applied to whole images, with the per-pixel function of
+// shading/tonemap.h that a display shader would run.
 #pragma once
 
 #include <string>

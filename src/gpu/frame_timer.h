@@ -1,5 +1,5 @@
 // Times the parts of a frame (update: captures and builds; direct: the scene without
-// reflections; reflect: the reflections). Two clocks (DESIGN §7):
+// reflections; reflect: the reflections). Two clocks (docs/architecture.md, "Timing"):
 //  - wall: glFinish() at each part boundary and the steady clock. Required on llvmpipe, whose
 //    timer queries measure command submission, not rasterisation;
 //  - gpu: GL_TIMESTAMP queries at each boundary, no stalls, read back when results are asked for

@@ -1,5 +1,6 @@
-// Materials of the shared shading model (DESIGN §3): diffuse (albedo, checker or texture) and
-// reflector (base colour, tint, reflectivity, Fresnel f0, distance attenuation, normal map).
+// Materials of the shared shading model (docs/architecture.md, "One shading model"): diffuse
+// (albedo, checker or texture) and reflector (base colour, tint, reflectivity, Fresnel f0,
+// distance attenuation, normal map).
 #pragma once
 
 #include <string>

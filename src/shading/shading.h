@@ -1,5 +1,5 @@
-// The one shading model of mirage (DESIGN §3), shared verbatim by the GLSL shaders and the
-// C++ ray tracer:
+// The one shading model of mirage (docs/architecture.md, "One shading model"), shared verbatim
+// by the GLSL shaders and the C++ ray tracer:
 //  - diffuse surfaces: view-independent, albedo * (ambient + light * max(n.l, 0)), no shadows;
 //    the same on an object, in any impostor captured of it, and in the ray tracer;
 //  - reflectors: mix(base, tint * L_reflected, w), w = reflectivity * fresnel * attenuation(d);
