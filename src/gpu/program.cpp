@@ -1,15 +1,47 @@
 #include "gpu/program.h"
 
+#include <algorithm>
+#include <atomic>
+#include <cstring>
+#include <regex>
+
 #include "core/error.h"
+#include "gpu/context.h"
 #include "gpu/shader_source.h"
 
 namespace mirage::gpu {
 
 namespace {
 
+// The text with each comment replaced by a space (by hand: libstdc++'s regex recurses per
+// character of a match, too deep for a long block comment).
+std::string withoutComments(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (size_t i = 0; i < text.size();) {
+    if (text.compare(i, 2, "//") == 0) {
+      i = text.find('\n', i);
+      if (i == std::string::npos) break;
+    } else if (text.compare(i, 2, "/*") == 0) {
+      const size_t end = text.find("*/", i + 2);
+      i = end == std::string::npos ? text.size() : end + 2;
+      out += ' ';
+    } else {
+      out += text[i++];
+    }
+  }
+  return out;
+}
+
+std::atomic<bool>& uniformChecksFlag() {
+  static std::atomic<bool> on{debugSwitch("MIRAGE_GL_CHECK_UNIFORMS")};
+  return on;
+}
+
 Handle<ShaderTraits> compileStage(GLenum stage, const std::string& path,
-                                  const std::vector<std::string>& defines) {
+                                  const std::vector<std::string>& defines, std::string& all_text) {
   ShaderSource source = loadShaderSource(path, defines);
+  all_text += source.text;
   Handle<ShaderTraits> shader(glCreateShader(stage));
   const char* text = source.text.c_str();
   glShaderSource(shader.id(), 1, &text, nullptr);
@@ -46,20 +78,70 @@ Handle<ProgramTraits> link(const std::vector<GLuint>& shaders, const std::string
 
 }  // namespace
 
-Program Program::graphics(const std::string& vertex_path, const std::string& fragment_path,
-                          const std::vector<std::string>& defines) {
-  auto vs = compileStage(GL_VERTEX_SHADER, vertex_path, defines);
-  auto fs = compileStage(GL_FRAGMENT_SHADER, fragment_path, defines);
+Program Program::linked(const std::vector<GLuint>& shaders, Sources sources) {
   Program p;
-  p.handle_ = link({vs.id(), fs.id()}, vertex_path + " + " + fragment_path);
+  p.handle_ = link(shaders, sources.what);
+  p.sources_ = std::make_shared<Sources>(std::move(sources));
   return p;
 }
 
+Program Program::graphics(const std::string& vertex_path, const std::string& fragment_path,
+                          const std::vector<std::string>& defines) {
+  Sources sources;
+  sources.what = vertex_path + " + " + fragment_path;
+  auto vs = compileStage(GL_VERTEX_SHADER, vertex_path, defines, sources.text);
+  auto fs = compileStage(GL_FRAGMENT_SHADER, fragment_path, defines, sources.text);
+  return linked({vs.id(), fs.id()}, std::move(sources));
+}
+
 Program Program::compute(const std::string& path, const std::vector<std::string>& defines) {
-  auto cs = compileStage(GL_COMPUTE_SHADER, path, defines);
-  Program p;
-  p.handle_ = link({cs.id()}, path);
-  return p;
+  Sources sources;
+  sources.what = path;
+  auto cs = compileStage(GL_COMPUTE_SHADER, path, defines, sources.text);
+  return linked({cs.id()}, std::move(sources));
+}
+
+GLint Program::location(const char* name) const {
+  const GLint at = glGetUniformLocation(id(), name);
+  if (at >= 0 || !sources_ || !uniformChecks()) return at;
+  if (!sources_->scanned) {
+    sources_->uniforms = declaredUniforms(sources_->text);
+    std::sort(sources_->uniforms.begin(), sources_->uniforms.end());
+    sources_->scanned = true;
+  }
+  // "u_a[2]" and "u_s.field" are declared as u_a and u_s.
+  const std::string base(name, std::strcspn(name, "[."));
+  if (!std::binary_search(sources_->uniforms.begin(), sources_->uniforms.end(), base))
+    throwRuntime("program '{}': set() of uniform '{}', which its sources do not declare",
+                 sources_->what, name);
+  return at;
+}
+
+bool uniformChecks() {
+  return uniformChecksFlag().load();
+}
+void setUniformChecks(bool on) {
+  uniformChecksFlag().store(on);
+}
+
+std::vector<std::string> declaredUniforms(const std::string& glsl) {
+  // `uniform`, then up to the semicolon: a type and declarators, or a block (`Name {`: skipped).
+  static const std::regex declaration(R"(\buniform\s+([^;{]*);)");
+  static const std::regex qualifier(
+      R"(^(?:(?:lowp|mediump|highp|restrict|readonly|writeonly|coherent|volatile)\s+)*)");
+  static const std::regex declarator(R"(([A-Za-z_]\w*)\s*(?:\[[^\]]*\]\s*)*(?:=[^,]*)?(?:,|$))");
+  const std::string code = withoutComments(glsl);
+  std::vector<std::string> names;
+  for (std::sregex_iterator it(code.begin(), code.end(), declaration), end; it != end; ++it) {
+    std::string rest = std::regex_replace((*it)[1].str(), qualifier, "");
+    // Drop the type (its first word, with any array suffix), keep the declarators.
+    const size_t type_end = rest.find_first_of(" \t\n");
+    if (type_end == std::string::npos) continue;
+    rest = rest.substr(type_end);
+    for (std::sregex_iterator d(rest.begin(), rest.end(), declarator), e; d != e; ++d)
+      names.push_back((*d)[1].str());
+  }
+  return names;
 }
 
 void Program::set(const char* name, const vec2& v) const {

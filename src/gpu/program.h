@@ -1,6 +1,13 @@
 // Linked GLSL programs built from shader files (see shader_source.h), with uniform setters.
+//
+// A uniform name that a program neither has active nor declares anywhere in its sources is a
+// misspelling, which GL answers by ignoring the call. With the uniform checks on (debug builds,
+// MIRAGE_GL_CHECK_UNIFORMS=1, or setUniformChecks(true), which the tests' main calls) set()
+// throws RuntimeError naming the program and the name instead. A declared uniform that the
+// compiler removed (unused under this program's defines) stays a silent no-op, as GL has it.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -22,7 +29,9 @@ class Program {
   explicit operator bool() const { return bool(handle_); }
   void use() const { glUseProgram(id()); }
 
-  GLint location(const char* name) const { return glGetUniformLocation(id(), name); }
+  // The uniform's location, -1 where it is inactive; with the checks on, throws for a name the
+  // sources do not declare.
+  GLint location(const char* name) const;
   void set(const char* name, int v) const { glProgramUniform1i(id(), location(name), v); }
   void set(const char* name, float v) const { glProgramUniform1f(id(), location(name), v); }
   void set(const char* name, const vec2& v) const;
@@ -33,7 +42,24 @@ class Program {
   void set(const char* name, const mat4& v) const;
 
  private:
+  struct Sources {
+    std::string what;  // the shader paths, for messages
+    std::string text;  // every stage's expanded source
+    // Every name declared `uniform`, sorted: read from `text` when a set() first misses.
+    std::vector<std::string> uniforms;
+    bool scanned = false;
+  };
+  static Program linked(const std::vector<GLuint>& shaders, Sources sources);
+
   Handle<ProgramTraits> handle_;
+  std::shared_ptr<Sources> sources_;
 };
+
+bool uniformChecks();
+void setUniformChecks(bool on);
+
+// The names a GLSL text declares `uniform` (`uniform T a;`, `uniform T a, b[4] = ...;`, after
+// layout, precision and memory qualifiers; not uniform blocks), in order, comments skipped.
+std::vector<std::string> declaredUniforms(const std::string& glsl);
 
 }  // namespace mirage::gpu

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -25,23 +24,6 @@ std::vector<std::string> linesOf(const std::string& text) {
   for (std::string line; std::getline(in, line);) out.push_back(line);
   return out;
 }
-
-// MIRAGE_SHADER_DIR pointed at a folder of the test's own files for one scope: a file there
-// replaces the embedded file of the same path (how shaders are edited live).
-class ShaderDir {
- public:
-  explicit ShaderDir(const std::string& prefix) : dir_(test::testTempDir(prefix)) {
-    ::setenv("MIRAGE_SHADER_DIR", dir_.string().c_str(), 1);
-  }
-  ~ShaderDir() { ::unsetenv("MIRAGE_SHADER_DIR"); }
-  void write(const std::string& path, const std::string& text) const {
-    std::filesystem::create_directories((dir_ / path).parent_path());
-    std::ofstream(dir_ / path) << text;
-  }
-
- private:
-  std::filesystem::path dir_;
-};
 
 TEST(ShaderSource, VersionAndDefinesComeFirst) {
   const ShaderSource s = loadShaderSource("render/shaders/fullscreen.vert", {"A", "B 2"});
@@ -79,7 +61,7 @@ TEST(ShaderSource, IncludesAreExpandedOnceEachWithTheirOwnLineNumbers) {
 }
 
 TEST(ShaderSource, RelativeIncludesThenFromSrcAndAngleIncludesDropped) {
-  ShaderDir dir("shader-source");
+  test::ScopedShaderDir dir("shader-source");
   // A file at an embedded path, replaced by the test's: "common.glsl" resolves next to it
   // (render/shaders/common.glsl), "shading/glsl_compat.h" from src/, <cmath> is C++ only.
   dir.write("render/shaders/fullscreen.vert",
@@ -98,7 +80,7 @@ TEST(ShaderSource, RelativeIncludesThenFromSrcAndAngleIncludesDropped) {
 }
 
 TEST(ShaderSource, AMissingIncludeNamesTheFileAndLine) {
-  ShaderDir dir("shader-source-missing");
+  test::ScopedShaderDir dir("shader-source-missing");
   dir.write("render/shaders/fullscreen.vert", "\n\n#include \"no/such/file.glsl\"\n");
   try {
     loadShaderSource("render/shaders/fullscreen.vert");

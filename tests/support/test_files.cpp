@@ -7,6 +7,7 @@
 #include <array>
 #include <cctype>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 
 namespace mirage::test {
@@ -21,6 +22,16 @@ fs::path testTempDir(const std::string& prefix) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
+}
+
+ScopedShaderDir::ScopedShaderDir(const std::string& prefix) : dir_(testTempDir(prefix)) {
+  ::setenv("MIRAGE_SHADER_DIR", dir_.string().c_str(), 1);
+}
+
+ScopedShaderDir::~ScopedShaderDir() { ::unsetenv("MIRAGE_SHADER_DIR"); }
+
+void ScopedShaderDir::write(const std::string& path, const std::string& text) const {
+  writeText(dir_ / path, text);
 }
 
 void writeText(const fs::path& path, const std::string& text) {

@@ -16,6 +16,20 @@ std::filesystem::path testTempDir(const std::string& prefix);
 // Writes `text` to `path` (binary), creating the parent folders.
 void writeText(const std::filesystem::path& path, const std::string& text);
 
+// MIRAGE_SHADER_DIR pointed at a fresh folder of the test's own shader files for one scope: a
+// file written there replaces the embedded file of the same path (as for live editing).
+class ScopedShaderDir {
+ public:
+  explicit ScopedShaderDir(const std::string& prefix);
+  ~ScopedShaderDir();
+  ScopedShaderDir(const ScopedShaderDir&) = delete;
+  ScopedShaderDir& operator=(const ScopedShaderDir&) = delete;
+  void write(const std::string& path, const std::string& text) const;
+
+ private:
+  std::filesystem::path dir_;
+};
+
 // An ASCII PLY of the axis-aligned box from `lo` to `hi` (8 vertices, 12 triangles).
 std::string boxPlyText(vec3 lo = vec3(0.0f), vec3 hi = vec3(1.0f));
 
