@@ -24,20 +24,18 @@ std::unique_ptr<Method> FrameRenderer::createMethod(const std::string& name,
   std::map<std::string, std::string> own;
   for (const ParamSpec& spec : entry.info.params)
     if (auto it = given.find(spec.name); it != given.end()) own[spec.name] = it->second;
-  // Methods keep a reference to their parameters: store them as long as this renderer lives.
-  param_storage_.push_back(
-      std::make_unique<ParamValues>(ParamValues::validate(entry.info.params, own, name)));
-  const ParamValues& params = *param_storage_.back();
+  // A method reads its setup while it is made and keeps copies of what it needs (method.h), so
+  // the parameters live only for this call; the fallback, made later if at all, keeps its own
+  // copy of the settings.
+  const ParamValues params = ParamValues::validate(entry.info.params, own, name);
   if (name == "envmap") return entry.create({entry.info, *gpu_, *passes_, params, settings});
   // Every other method falls back to envmap (default parameters) when the driver refuses it.
-  settings_storage_.push_back(std::make_unique<FrameSettings>(settings));
-  const FrameSettings& kept = *settings_storage_.back();
   return std::make_unique<MethodGuard>(
       name,
       [&] {
-        return entry.create({entry.info, *gpu_, *passes_, params, kept});
+        return entry.create({entry.info, *gpu_, *passes_, params, settings});
       },
-      [this, &kept] { return createMethod("envmap", {}, kept); });
+      [this, settings] { return createMethod("envmap", {}, settings); });
 }
 
 void FrameRenderer::render(Method& method, const View& view, float time,

@@ -50,8 +50,6 @@ class FrameRenderer {
   std::unique_ptr<GpuScene> gpu_;
   std::unique_ptr<ScenePasses> passes_;
   FrameTarget target_;
-  std::vector<std::unique_ptr<ParamValues>> param_storage_;
-  std::vector<std::unique_ptr<FrameSettings>> settings_storage_;  // for methods made later
 };
 
 }  // namespace mirage

@@ -43,7 +43,11 @@ std::map<std::string, double> frameCounts(const MethodInfo& info,
                                           const std::map<std::string, double>& before,
                                           const std::map<std::string, double>& after);
 
-// What a method is created with: the scene on the GPU and its validated parameters.
+// What a method is created with: the scene on the GPU and its validated parameters. `info`, `gpu`
+// and `passes` outlive the method (the registry's, the frame renderer's); `params` and
+// `settings` live only while it is made: a method copies what it needs of them in its
+// constructor, so that the frame renderer keeps nothing per method made (the viewer makes one at
+// every switch).
 struct MethodSetup {
   const MethodInfo& info;  // the registry's entry (lives as long as the program)
   GpuScene& gpu;
