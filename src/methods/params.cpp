@@ -53,6 +53,10 @@ std::string ParamSpec::rangeText() const {
   return formatNumber(min) + ".." + formatNumber(max);
 }
 
+void choiceMissing(const std::string& name, const std::string& value) {
+  throwRuntime("internal error: --{} {}: the method's table of choices lacks it", name, value);
+}
+
 void checkParam(const ParamSpec& spec, const std::string& value) {
   auto fail = [&](const char* what) {
     throwInput("--{} {}: {}; allowed: {}", spec.name, value, what, spec.rangeText());
@@ -105,6 +109,11 @@ int ParamValues::integer(const std::string& name) const {
 }
 double ParamValues::real(const std::string& name) const {
   return std::stod(text(name));
+}
+
+bool ParamValues::on(const std::string& name) const {
+  static constexpr Choice<bool> kOnOff[] = {{"on", true}, {"off", false}};
+  return choice<bool>(name, kOnOff);
 }
 
 const std::string& ParamValues::text(const std::string& name) const {

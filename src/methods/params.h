@@ -4,10 +4,21 @@
 #pragma once
 
 #include <map>
+#include <span>
 #include <string>
 #include <vector>
 
 namespace mirage {
+
+// One value of a choice parameter and what it means to the method that reads it. A method lists
+// its choices once, as a table, for the spec (ParamSpec::choice) and for reading the value into
+// its enum (ParamValues::choice), so that nothing compares the text with a literal:
+//   constexpr Choice<Warper> kWarpers[] = {{"gpu", Warper::kGpu}, {"cpu", Warper::kCpu}};
+template <typename E>
+struct Choice {
+  const char* name;
+  E value;
+};
 
 struct ParamSpec {
   enum class Type { kInt, kFloat, kChoice };
@@ -22,6 +33,9 @@ struct ParamSpec {
   static ParamSpec integer(std::string name, int min, int max, int def, std::string help);
   static ParamSpec real(std::string name, double min, double max, double def, std::string help);
   static ParamSpec choice(std::string name, std::vector<std::string> choices, std::string def,
+                          std::string help);
+  template <typename E>
+  static ParamSpec choice(std::string name, std::span<const Choice<E>> choices, E def,
                           std::string help);
   // "1..4096", "0..1e+06", "on|off".
   std::string rangeText() const;
@@ -41,6 +55,12 @@ class ParamValues {
   int integer(const std::string& name) const;
   double real(const std::string& name) const;
   const std::string& text(const std::string& name) const;
+  // A choice parameter's value read through its table; a value the table lacks (the table and
+  // the spec disagree: a bug) fails a check naming the parameter.
+  template <typename E>
+  E choice(const std::string& name, std::span<const Choice<E>> choices) const;
+  // An on|off choice parameter.
+  bool on(const std::string& name) const;
   bool has(const std::string& name) const { return values_.count(name) != 0; }
   const std::map<std::string, std::string>& all() const { return values_; }
 
@@ -50,5 +70,27 @@ class ParamValues {
 
 // Checks one value against its spec; throws InputError("--name ...") on failure.
 void checkParam(const ParamSpec& spec, const std::string& value);
+
+[[noreturn]] void choiceMissing(const std::string& name, const std::string& value);
+
+template <typename E>
+ParamSpec ParamSpec::choice(std::string name, std::span<const Choice<E>> choices, E def,
+                            std::string help) {
+  std::vector<std::string> names;
+  std::string def_name;
+  for (const Choice<E>& c : choices) {
+    names.emplace_back(c.name);
+    if (c.value == def) def_name = c.name;
+  }
+  return choice(std::move(name), std::move(names), std::move(def_name), std::move(help));
+}
+
+template <typename E>
+E ParamValues::choice(const std::string& name, std::span<const Choice<E>> choices) const {
+  const std::string& value = text(name);
+  for (const Choice<E>& c : choices)
+    if (value == c.name) return c.value;
+  choiceMissing(name, value);
+}
 
 }  // namespace mirage

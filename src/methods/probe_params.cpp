@@ -8,9 +8,10 @@ ParamSpec envmapSizeParam() {
 }
 
 ParamSpec probeProxyParam() {
-  return ParamSpec::choice("proxy", {"box", "sphere"}, "box",
-                           "envmap-box's proxy of the room: its box, or the box's circumscribed "
-                           "sphere (Bjorke)");
+  return ParamSpec::choice<ProbeProxy>(
+      "proxy", kProbeProxies, ProbeProxy::kBox,
+      "envmap-box's proxy of the room: its box, or the box's circumscribed "
+      "sphere (Bjorke)");
 }
 
 }  // namespace mirage

@@ -8,6 +8,11 @@
 
 namespace mirage {
 
+// envmap-box's proxy of the room.
+enum class ProbeProxy { kBox, kSphere };
+inline constexpr Choice<ProbeProxy> kProbeProxies[] = {{"box", ProbeProxy::kBox},
+                                                       {"sphere", ProbeProxy::kSphere}};
+
 // --envmap-size: the face size of each reflector's cube map, in texels.
 ParamSpec envmapSizeParam();
 // --proxy: envmap-box's proxy of the room (its box, or the box's circumscribed sphere).

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/error.h"
 #include "methods/method.h"
 
 namespace mirage {
@@ -59,6 +60,28 @@ TEST(MethodParams, DifferingSpecsOfOneNameAreRefusedNamingBothMethods) {
     EXPECT_NE(what.find("methods a and b"), std::string::npos) << what;
     EXPECT_NE(what.find("--size"), std::string::npos) << what;
   }
+}
+
+enum class Fruit { kApple, kPear };
+constexpr Choice<Fruit> kFruits[] = {{"apple", Fruit::kApple}, {"pear", Fruit::kPear}};
+
+TEST(MethodParams, ChoicesAreReadThroughTheirTable) {
+  const std::vector<ParamSpec> specs = {
+      ParamSpec::choice<Fruit>("fruit", kFruits, Fruit::kPear, "a fruit"),
+      ParamSpec::choice("switch", {"on", "off"}, "on", "a switch")};
+  EXPECT_EQ(specs[0].choices, (std::vector<std::string>{"apple", "pear"}));
+  EXPECT_EQ(specs[0].default_value, "pear");
+  const ParamValues defaults = ParamValues::validate(specs, {}, "test");
+  EXPECT_EQ(defaults.choice<Fruit>("fruit", kFruits), Fruit::kPear);
+  EXPECT_TRUE(defaults.on("switch"));
+  const ParamValues given =
+      ParamValues::validate(specs, {{"fruit", "apple"}, {"switch", "off"}}, "test");
+  EXPECT_EQ(given.choice<Fruit>("fruit", kFruits), Fruit::kApple);
+  EXPECT_FALSE(given.on("switch"));
+  // A table that lacks a value the spec allows is a bug of the method: an internal error.
+  constexpr Choice<Fruit> kApplesOnly[] = {{"apple", Fruit::kApple}};
+  EXPECT_THROW(defaults.choice<Fruit>("fruit", kApplesOnly), RuntimeError);
+  EXPECT_THROW(defaults.on("fruit"), RuntimeError);
 }
 
 }  // namespace

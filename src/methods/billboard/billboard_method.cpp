@@ -12,7 +12,7 @@ class BillboardMethod final : public Method {
   explicit BillboardMethod(const MethodSetup& setup)
       : info_(setup.info),
         stage_(billboardStageOptions(setup.params)),
-        last_bounce_reflective_(setup.params.text("last-bounce") == "all"),
+        last_bounce_reflective_(lastBounceReflective(setup.params)),
         program_(gpu::Program::graphics("render/shaders/scene.vert",
                                         "methods/billboard/billboard.frag")),
         base_program_(baseColourProgram()) {}

@@ -12,6 +12,16 @@ namespace mirage {
 
 namespace {
 
+// --depthmap-search linear: a walk of the full map (true), else the SRDM rows.
+constexpr Choice<bool> kLinearSearch[] = {{"srdm", false}, {"linear", true}};
+// --srdm-second: the search the shader compiles in for --srdm-rows 2 (DEPTHMAP_SEARCH).
+constexpr Choice<int> kSecondRowSearches[] = {
+    {"hit", MIRAGE_DEPTHMAP_SEARCH_HIT},
+    {"interpolate", MIRAGE_DEPTHMAP_SEARCH_INTERPOLATE},
+    {"hit-interpolate", MIRAGE_DEPTHMAP_SEARCH_HIT_INTERPOLATE}};
+constexpr Choice<SrdmBuilder> kSrdmBuilders[] = {{"cpu", SrdmBuilder::kCpu},
+                                                 {"gpu", SrdmBuilder::kGpu}};
+
 DepthMapOptions depthMapOptions(const ParamValues& params) {
   DepthMapOptions o;
   o.size = params.integer("depthmap-size");
@@ -23,12 +33,9 @@ DepthMapOptions depthMapOptions(const ParamValues& params) {
 
 // The search the shader compiles in (depthmap_shared.h, DEPTHMAP_SEARCH).
 int depthMapSearch(const ParamValues& params) {
-  if (params.text("depthmap-search") == "linear") return MIRAGE_DEPTHMAP_SEARCH_LINEAR;
+  if (params.choice<bool>("depthmap-search", kLinearSearch)) return MIRAGE_DEPTHMAP_SEARCH_LINEAR;
   if (params.integer("srdm-rows") == 1) return MIRAGE_DEPTHMAP_SEARCH_SRDM;
-  const std::string second = params.text("srdm-second");
-  if (second == "hit") return MIRAGE_DEPTHMAP_SEARCH_HIT;
-  if (second == "interpolate") return MIRAGE_DEPTHMAP_SEARCH_INTERPOLATE;
-  return MIRAGE_DEPTHMAP_SEARCH_HIT_INTERPOLATE;
+  return params.choice<int>("srdm-second", kSecondRowSearches);
 }
 
 SrdmSettings srdmSettings(const ParamValues& params) {
@@ -47,10 +54,8 @@ class DepthMapMethod final : public Method {
         srdm_(srdmSettings(setup.params)),
         specs_(placeDepthMaps(setup.gpu.scene(), options_)),
         stage_(stageOptions(setup.params, specs_)),
-        capture_(
-            options_, srdm_,
-            setup.params.text("srdm-builder") == "gpu" ? SrdmBuilder::kGpu : SrdmBuilder::kCpu),
-        last_bounce_reflective_(setup.params.text("last-bounce") == "all"),
+        capture_(options_, srdm_, setup.params.choice<SrdmBuilder>("srdm-builder", kSrdmBuilders)),
+        last_bounce_reflective_(lastBounceReflective(setup.params)),
         program_(gpu::Program::graphics("render/shaders/scene.vert",
                                         "methods/depthmap/depthmap.frag",
                                         shaderDefines(specs_, setup.params))),
@@ -177,21 +182,23 @@ MethodEntry depthmapMethodEntry() {
       ParamSpec::choice("srdm-simplify", {"greedy", "fit"}, "greedy",
                         "row simplifier: the paper's greedy refinement, or its knots with "
                         "depths fitted by least squares"),
-      ParamSpec::choice("srdm-builder", {"cpu", "gpu"}, "cpu",
-                        "SRDM builder: multithreaded CPU from the depth read back (the faster "
-                        "on llvmpipe), or a compute shader on the depth array (greedy only)"),
-      ParamSpec::choice("depthmap-search", {"srdm", "linear"}, "srdm",
-                        "ray-depth-map intersection: one SRDM row, or a walk of the full map "
-                        "along the projected ray (the baseline)"),
+      ParamSpec::choice<SrdmBuilder>(
+          "srdm-builder", kSrdmBuilders, SrdmBuilder::kCpu,
+          "SRDM builder: multithreaded CPU from the depth read back (the faster "
+          "on llvmpipe), or a compute shader on the depth array (greedy only)"),
+      ParamSpec::choice<bool>("depthmap-search", kLinearSearch, false,
+                              "ray-depth-map intersection: one SRDM row, or a walk of the full map "
+                              "along the projected ray (the baseline)"),
       ParamSpec::integer("srdm-rows", 1, 2, 1,
                          "SRDM rows per search: 1 (the paper: the row through the projected "
                          "ray's midpoint), 2 (a second row, --srdm-second)"),
-      ParamSpec::choice("srdm-second", {"hit", "interpolate", "hit-interpolate"}, "hit-interpolate",
-                        "what --srdm-rows 2 reads after the row through the projected ray's "
-                        "midpoint: hit, the row through that row's hit (its answer replaces the "
-                        "first); interpolate, instead of it the paper's two best rows (the two "
-                        "nearest domains' rows through the midpoint, depths interpolated by "
-                        "angle); hit-interpolate, the two best rows through the first row's hit")};
+      ParamSpec::choice<int>(
+          "srdm-second", kSecondRowSearches, MIRAGE_DEPTHMAP_SEARCH_HIT_INTERPOLATE,
+          "what --srdm-rows 2 reads after the row through the projected ray's "
+          "midpoint: hit, the row through that row's hit (its answer replaces the "
+          "first); interpolate, instead of it the paper's two best rows (the two "
+          "nearest domains' rows through the midpoint, depths interpolated by "
+          "angle); hit-interpolate, the two best rows through the first row's hit")};
   for (const ParamSpec& p : billboardStageParams()) entry.info.params.push_back(p);
   entry.info.counters = {"depthmap_color_captures", "depthmap_depth_captures", "srdm_builds",
                          "billboard_captures", "environment_captures"};

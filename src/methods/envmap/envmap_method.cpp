@@ -26,7 +26,9 @@ class EnvmapMethod final : public Method {
         variant_(variant),
         infinite_(variant == Variant::kInfinite),
         size_(infinite_ ? 0 : setup.params.integer("envmap-size")),
-        sphere_proxy_(variant == Variant::kBox && setup.params.text("proxy") == "sphere"),
+        sphere_proxy_(variant == Variant::kBox &&
+                      setup.params.choice<ProbeProxy>("proxy", kProbeProxies) ==
+                          ProbeProxy::kSphere),
         program_(gpu::Program::graphics("render/shaders/scene.vert", "methods/envmap/envmap.frag",
                                         shaderDefines(variant))),
         base_program_(baseColourProgram()),

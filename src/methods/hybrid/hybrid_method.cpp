@@ -19,6 +19,12 @@ namespace mirage {
 
 namespace {
 
+// The choices of the binary parameters, each read once into the flag it sets.
+constexpr Choice<bool> kCullOnGpu[] = {{"cpu", false}, {"gpu", true}};
+constexpr Choice<bool> kFirstProjectionOnly[] = {{"all", false}, {"first", true}};
+constexpr Choice<bool> kKeepBackfaces[] = {{"cull", false}, {"keep", true}};
+constexpr Choice<bool> kEyeScaledRays[] = {{"eye", true}, {"unit", false}};
+
 Culling parseCulling(const std::string& text) {
   if (text == "none") return Culling::kNone;
   if (text == "hull") return Culling::kHull;
@@ -53,9 +59,9 @@ class HybridMethod final : public Method {
       : info_(setup.info),
         store_(setup.gpu.scene(), pointOptions(setup.params), treeOptions(setup.params)),
         culling_(parseCulling(setup.params.text("hybrid-culling"))),
-        first_only_(setup.params.text("hybrid-projections") == "first"),
-        keep_backfaces_(setup.params.text("hybrid-backfaces") == "keep"),
-        eye_scaled_(setup.params.text("c3rc-rays") == "eye"),
+        first_only_(setup.params.choice<bool>("hybrid-projections", kFirstProjectionOnly)),
+        keep_backfaces_(setup.params.choice<bool>("hybrid-backfaces", kKeepBackfaces)),
+        eye_scaled_(setup.params.choice<bool>("c3rc-rays", kEyeScaledRays)),
         // Pixel sizes are output pixels: a frame supersampled N x N has N times the side and N^2
         // times the count of them (FrameSettings::pixel_scale).
         pixel_scale_(setup.settings.pixel_scale),
@@ -73,7 +79,7 @@ class HybridMethod final : public Method {
     reflectors_ = scene.reflectorInstances();
     for (int i = 0; i < int(scene.instances.size()); ++i)
       if (!scene.isReflector(i) && !isPointSampled(i)) background_.push_back(i);
-    if (setup.params.text("hybrid-cull-on") == "gpu") {
+    if (setup.params.choice<bool>("hybrid-cull-on", kCullOnGpu)) {
       if (lod_density_ > 0.0f)
         throwInput(
             "hybrid: --hybrid-lod {} needs --hybrid-cull-on cpu (the GPU traversal hands every "
@@ -377,20 +383,22 @@ MethodEntry hybridMethodEntry() {
       ParamSpec::choice("hybrid-culling", {"exact", "hull", "none"}, "exact",
                         "view-volume culling of kd-tree boxes: hull planes then the exact test, "
                         "the hull planes only, or none (every point through every C3RC)"),
-      ParamSpec::choice("hybrid-cull-on", {"cpu", "gpu"}, "cpu",
-                        "where the kd-trees are culled: on the CPU (TBB, adjacent leaves merged "
-                        "into longer items) or by a compute shader (the same tests; slower on "
-                        "llvmpipe)"),
-      ParamSpec::choice("hybrid-projections", {"all", "first"}, "all",
-                        "splat every projection of a point within a C3RC, or the first only "
-                        "(the paper's one fragment per point)"),
-      ParamSpec::choice("hybrid-backfaces", {"cull", "keep"}, "cull",
-                        "points of a closed object facing away from a reflector triangle: "
-                        "skipped before the projection (hidden; open surfaces keep them), or "
-                        "projected as the paper does"),
-      ParamSpec::choice("c3rc-rays", {"eye", "unit"}, "eye",
-                        "construction rays' lengths: the vertex's distance to the eye (exact on "
-                        "planar mirrors) or unit (the paper's)"),
+      ParamSpec::choice<bool>(
+          "hybrid-cull-on", kCullOnGpu, false,
+          "where the kd-trees are culled: on the CPU (TBB, adjacent leaves merged "
+          "into longer items) or by a compute shader (the same tests; slower on "
+          "llvmpipe)"),
+      ParamSpec::choice<bool>("hybrid-projections", kFirstProjectionOnly, false,
+                              "splat every projection of a point within a C3RC, or the first only "
+                              "(the paper's one fragment per point)"),
+      ParamSpec::choice<bool>("hybrid-backfaces", kKeepBackfaces, false,
+                              "points of a closed object facing away from a reflector triangle: "
+                              "skipped before the projection (hidden; open surfaces keep them), or "
+                              "projected as the paper does"),
+      ParamSpec::choice<bool>(
+          "c3rc-rays", kEyeScaledRays, true,
+          "construction rays' lengths: the vertex's distance to the eye (exact on "
+          "planar mirrors) or unit (the paper's)"),
       ParamSpec::integer("splat-size", 0, MIRAGE_HYBRID_MAX_SPLAT, 0,
                          "side of the square splat in pixels (0: from the point spacing and the "
                          "local magnification, at most 8)"),

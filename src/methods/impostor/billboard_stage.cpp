@@ -1,32 +1,49 @@
 #include "methods/impostor/billboard_stage.h"
-#include "methods/probe_params.h"
 
 #include <span>
 
+#include "methods/probe_params.h"
+
 namespace mirage {
 
+namespace {
+
+// --billboard-objects: billboards for every diffuse object (true), or for planar ones only.
+constexpr Choice<bool> kAllObjects[] = {{"all", true}, {"planar", false}};
+// --last-bounce: the last bounce tests every billboard (true), reflective ones included, or the
+// diffuse ones only.
+constexpr Choice<bool> kLastBounceReflective[] = {{"all", true}, {"diffuse", false}};
+
+}  // namespace
+
+bool lastBounceReflective(const ParamValues& params) {
+  return params.choice<bool>("last-bounce", kLastBounceReflective);
+}
+
 std::vector<ParamSpec> billboardStageParams() {
-  return {ParamSpec::integer("billboard-size", 16, 4096, 256,
-                             "face size of each billboard texture, in texels"),
-          ParamSpec::real("billboard-fov", 1.0, 60.0, 10.0,
-                          "field of view of the billboard capture camera, in degrees"),
-          ParamSpec::choice("billboard-objects", {"all", "planar"}, "all",
-                            "which diffuse objects get billboards: all, or planar ones only (the "
-                            "others are reflected through a captured environment map)"),
-          ParamSpec::choice("last-bounce", {"all", "diffuse"}, "all",
-                            "what the last bounce tests: all billboards (a reflector hit shows its "
-                            "base colour, as the ray tracer at order K) or diffuse ones only (the "
-                            "paper's D + R - 1 + D count)"),
-          ParamSpec::real("morph-height", 0.0, 1.0e6, 0.0,
-                          "height of the transition walls that morph the ground billboard into the "
-                          "environment (scene units; 0 = off)"),
-          envmapSizeParam()};
+  return {
+      ParamSpec::integer("billboard-size", 16, 4096, 256,
+                         "face size of each billboard texture, in texels"),
+      ParamSpec::real("billboard-fov", 1.0, 60.0, 10.0,
+                      "field of view of the billboard capture camera, in degrees"),
+      ParamSpec::choice<bool>("billboard-objects", kAllObjects, true,
+                              "which diffuse objects get billboards: all, or planar ones only (the "
+                              "others are reflected through a captured environment map)"),
+      ParamSpec::choice<bool>(
+          "last-bounce", kLastBounceReflective, true,
+          "what the last bounce tests: all billboards (a reflector hit shows its "
+          "base colour, as the ray tracer at order K) or diffuse ones only (the "
+          "paper's D + R - 1 + D count)"),
+      ParamSpec::real("morph-height", 0.0, 1.0e6, 0.0,
+                      "height of the transition walls that morph the ground billboard into the "
+                      "environment (scene units; 0 = off)"),
+      envmapSizeParam()};
 }
 
 BillboardStageOptions billboardStageOptions(const ParamValues& params) {
   BillboardStageOptions o;
   o.set.fov_degrees = float(params.real("billboard-fov"));
-  o.set.objects = params.text("billboard-objects") == "all";
+  o.set.objects = params.choice<bool>("billboard-objects", kAllObjects);
   o.set.morph_height = float(params.real("morph-height"));
   o.billboard_size = params.integer("billboard-size");
   o.envmap_size = params.integer("envmap-size");

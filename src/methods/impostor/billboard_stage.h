@@ -29,6 +29,8 @@ struct BillboardStageOptions {
 // The parameters every impostor method takes for its billboards, and the options they make.
 std::vector<ParamSpec> billboardStageParams();
 BillboardStageOptions billboardStageOptions(const ParamValues& params);
+// --last-bounce all: the last bounce tests reflective billboards too (a hit shows its base colour).
+bool lastBounceReflective(const ParamValues& params);
 
 // Draws the reflectors' depth with `depth_program` (colour writes off), then `program` once per
 // visible reflector pixel (depth test LEQUAL, no depth writes): the expensive shader runs once

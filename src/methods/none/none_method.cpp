@@ -1,4 +1,5 @@
 #include "methods/none/none_method.h"
+
 #include "render/base_colour.h"
 
 namespace mirage {

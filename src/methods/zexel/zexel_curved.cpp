@@ -1,24 +1,33 @@
 #include "methods/zexel/zexel_curved.h"
-#include "render/base_colour.h"
 
 #include <algorithm>
 
+#include "render/base_colour.h"
+
 namespace mirage {
 
+namespace {
+
+// --zexel-curved: curved reflectors inverse-warped (true), or in their base colour.
+constexpr Choice<bool> kInverseWarp[] = {{"inverse", true}, {"base", false}};
+
+}  // namespace
+
 std::vector<ParamSpec> ZexelCurvedReflectors::params() {
-  return {ParamSpec::choice("zexel-curved", {"inverse", "base"}, "inverse",
-                            "curved reflectors: inverse warping of a depth-preserving cube map "
-                            "of each, or their base colour"),
-          ParamSpec::integer("zexel-cube-size", 16, 2048, 256,
-                             "face size of each curved reflector's depth-preserving cube map, "
-                             "in texels"),
-          ParamSpec::real("zexel-curved-step", 0.25, 16.0, 1.0,
-                          "the inverse warp's step along the reflected ray's epipolar line in "
-                          "the cube map, in texels")};
+  return {
+      ParamSpec::choice<bool>("zexel-curved", kInverseWarp, true,
+                              "curved reflectors: inverse warping of a depth-preserving cube map "
+                              "of each, or their base colour"),
+      ParamSpec::integer("zexel-cube-size", 16, 2048, 256,
+                         "face size of each curved reflector's depth-preserving cube map, "
+                         "in texels"),
+      ParamSpec::real("zexel-curved-step", 0.25, 16.0, 1.0,
+                      "the inverse warp's step along the reflected ray's epipolar line in "
+                      "the cube map, in texels")};
 }
 
 ZexelCurvedReflectors::ZexelCurvedReflectors(const MethodSetup& setup)
-    : inverse_(setup.params.text("zexel-curved") == "inverse"),
+    : inverse_(setup.params.choice<bool>("zexel-curved", kInverseWarp)),
       size_(setup.params.integer("zexel-cube-size")),
       search_(zexelInverseSettings(size_, float(setup.params.real("zexel-curved-step")))),
       program_(

@@ -19,14 +19,22 @@ namespace mirage {
 
 namespace {
 
+// --zexel-warper cpu: the warp on CPU threads (true), else the compute shader.
+constexpr Choice<bool> kCpuWarper[] = {{"gpu", false}, {"cpu", true}};
+// --zexel-resolve: where a mirror's splats are blended (ZexelMethod::resolvePass).
+enum class ResolveChoice { kAuto, kPass, kMirror };
+constexpr Choice<ResolveChoice> kResolveChoices[] = {{"auto", ResolveChoice::kAuto},
+                                                     {"pass", ResolveChoice::kPass},
+                                                     {"mirror", ResolveChoice::kMirror}};
+
 ZexelMapOptions mapOptions(const ParamValues& params) {
   ZexelMapOptions o;
   o.size = params.integer("zexel-size");
   o.count = params.integer("zexel-maps");
   o.cone = float(params.real("zexel-cone"));
   o.fov = float(params.real("zexel-fov"));
-  o.hierarchy = params.text("zexel-lod") == "on";
-  o.cpu_copies = params.text("zexel-warper") == "cpu";
+  o.hierarchy = params.on("zexel-lod");
+  o.cpu_copies = params.choice<bool>("zexel-warper", kCpuWarper);
   return o;
 }
 
@@ -93,10 +101,10 @@ class ZexelMethod final : public Method {
         per_frame_(std::min(setup.params.integer("zexel-maps-per-frame"), options_.count)),
         splat_(setup.params.integer("zexel-splat") * pixel_scale_),
         threads_(setup.params.integer("zexel-threads")),
-        keep_(setup.params.text("zexel-clear") == "off"),
+        keep_(!setup.params.on("zexel-clear")),
         fill_(setup.params.integer("zexel-fill")),
         tolerance_(float(setup.params.real("zexel-depth-tolerance")) / 100.0f),
-        resolve_choice_(setup.params.text("zexel-resolve")),
+        resolve_choice_(setup.params.choice<ResolveChoice>("zexel-resolve", kResolveChoices)),
         warp_program_(gpu::Program::compute("methods/zexel/zexel_warp.comp")),
         pyramid_program_(gpu::Program::compute("methods/zexel/zexel_pyramid.comp")),
         mirror_program_(mirrorProgram(splatSizes(splat_, pixel_scale_), false)),
@@ -224,7 +232,7 @@ class ZexelMethod final : public Method {
   // shader (its visible pixels alone: the cheaper where the rectangle is much larger than them,
   // as for a mirror beside or behind the eye, whose bounds project to the whole screen).
   bool useResolvePass(const ivec4& rect, const ZexelMirror& m) const {
-    if (resolve_choice_ != "auto") return resolve_choice_ == "pass";
+    if (resolve_choice_ != ResolveChoice::kAuto) return resolve_choice_ == ResolveChoice::kPass;
     const double area = double(std::max(rect.z - rect.x, 0)) * double(std::max(rect.w - rect.y, 0));
     return m.shown_pixels >= 0 && area <= kResolvePassMostPixelsPerShown * double(m.shown_pixels);
   }
@@ -271,7 +279,7 @@ class ZexelMethod final : public Method {
   bool keep_;
   int fill_;
   float tolerance_;
-  std::string resolve_choice_;
+  ResolveChoice resolve_choice_;
   gpu::Program warp_program_, pyramid_program_, mirror_program_, gather_program_, base_program_;
   ZexelResolvePass resolve_;
   gpu::Buffer counters_;
@@ -320,9 +328,9 @@ MethodEntry zexelMethodEntry() {
       ParamSpec::integer("zexel-fill", 0, 64, 16,
                          "exposed mirror pixels show the farthest zexel met within this many "
                          "pixels in eight directions (0: no fill, the paper)"),
-      ParamSpec::choice("zexel-warper", {"gpu", "cpu"}, "gpu",
-                        "gpu: a compute shader; cpu: the same warp on parallel threads (the "
-                        "same pixels whatever the threads)"),
+      ParamSpec::choice<bool>("zexel-warper", kCpuWarper, false,
+                              "gpu: a compute shader; cpu: the same warp on parallel threads (the "
+                              "same pixels whatever the threads)"),
       ParamSpec::integer("zexel-threads", 0, 256, 0, "threads of the CPU warper (0: all cores)"),
       ParamSpec::choice("zexel-lod", {"on", "off"}, "on",
                         "a mip-map-like hierarchy of the maps: each tile of a map warps the "
@@ -333,12 +341,13 @@ MethodEntry zexelMethodEntry() {
                       "zexels landing on a pixel within this many percent of the nearest's "
                       "distance are blended by their splat weights (surface splatting); 0: the "
                       "nearest only, the paper"),
-      ParamSpec::choice("zexel-resolve", {"auto", "pass", "mirror"}, "auto",
-                        "where the splats covering a mirror pixel are blended: pass, a compute "
-                        "pass over the mirror's screen rectangle before its draw (each cell "
-                        "fetched once for three pixels); mirror, the mirror's own shader (its "
-                        "visible pixels only); auto: the pass while the rectangle holds at most "
-                        "twice the pixels the mirror showed the frame before")};
+      ParamSpec::choice<ResolveChoice>(
+          "zexel-resolve", kResolveChoices, ResolveChoice::kAuto,
+          "where the splats covering a mirror pixel are blended: pass, a compute "
+          "pass over the mirror's screen rectangle before its draw (each cell "
+          "fetched once for three pixels); mirror, the mirror's own shader (its "
+          "visible pixels only); auto: the pass while the rectangle holds at most "
+          "twice the pixels the mirror showed the frame before")};
   for (const ParamSpec& p : ZexelCurvedReflectors::params()) entry.info.params.push_back(p);
   entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
     return std::make_unique<ZexelMethod>(setup);
