@@ -14,7 +14,7 @@
 #include "bench_registry.h"
 #include "core/error.h"
 #include "gpu/context.h"
-#include "methods/depthmap/depth_camera.h"
+#include "support/depth_camera.h"
 #include "methods/depthmap/srdm.h"
 #include "methods/depthmap/srdm_gpu_builder.h"
 #include "scene/builtin_scenes.h"

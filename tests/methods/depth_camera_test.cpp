@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "methods/depthmap/depth_camera.h"
+#include "support/depth_camera.h"
 #include "scene/builtin_scenes.h"
 
 namespace mirage {

@@ -7,7 +7,7 @@
 
 #include <random>
 
-#include "methods/depthmap/depth_camera.h"
+#include "support/depth_camera.h"
 #include "methods/depthmap/depthmap_set.h"
 #include "methods/depthmap/depthmap_shared.h"
 #include "methods/frame.h"

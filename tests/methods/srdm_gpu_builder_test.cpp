@@ -10,7 +10,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "methods/depthmap/depth_camera.h"
+#include "support/depth_camera.h"
 #include "methods/depthmap/srdm.h"
 #include "methods/depthmap/srdm_gpu_builder.h"
 #include "scene/builtin_scenes.h"

@@ -1,4 +1,4 @@
-#include "methods/depthmap/depth_camera.h"
+#include "support/depth_camera.h"
 
 #include <algorithm>
 

@@ -1,8 +1,9 @@
-// The pinhole camera of a depth-map impostor (the impostor paper, §4.1: "pphc"): it frames the
-// object's bounding sphere from a direction, with near and far planes that enclose the sphere,
-// so that the whole object lies in the depth range; and the depth map it sees, ray-traced on
-// the CPU (the reference the GPU capture is checked against, and the input of the builder's
-// benchmarks).
+// For the tests and the benchmarks: a pinhole camera framing a bounding sphere as a depth-map
+// impostor's does (the impostor paper, §4.1: "pphc"; the method's own is depthMapView), with
+// near and far planes that enclose the sphere, so that the whole object lies in the depth range;
+// and the depth map it sees, ray-traced on the CPU (the reference the GPU capture is checked
+// against, and the input of the builder's benchmarks). Here, not in the depthmap room, so that
+// the method's code names no raytrace/ header.
 #pragma once
 
 #include "core/camera.h"
