@@ -41,7 +41,7 @@ std::atomic<bool>& uniformChecksFlag() {
 Handle<ShaderTraits> compileStage(GLenum stage, const std::string& path,
                                   const std::vector<std::string>& defines, std::string& all_text) {
   ShaderSource source = loadShaderSource(path, defines);
-  all_text += source.text;
+  if (uniformChecks()) all_text += source.text;  // kept only where set() will check names
   Handle<ShaderTraits> shader(glCreateShader(stage));
   const char* text = source.text.c_str();
   glShaderSource(shader.id(), 1, &text, nullptr);
@@ -103,7 +103,7 @@ Program Program::compute(const std::string& path, const std::vector<std::string>
 
 GLint Program::location(const char* name) const {
   const GLint at = glGetUniformLocation(id(), name);
-  if (at >= 0 || !sources_ || !uniformChecks()) return at;
+  if (at >= 0 || !sources_ || sources_->text.empty() || !uniformChecks()) return at;
   if (!sources_->scanned) {
     sources_->uniforms = declaredUniforms(sources_->text);
     std::sort(sources_->uniforms.begin(), sources_->uniforms.end());

@@ -3,8 +3,9 @@
 // A uniform name that a program neither has active nor declares anywhere in its sources is a
 // misspelling, which GL answers by ignoring the call. With the uniform checks on (debug builds,
 // MIRAGE_GL_CHECK_UNIFORMS=1, or setUniformChecks(true), which the tests' main calls) set()
-// throws RuntimeError naming the program and the name instead. A declared uniform that the
-// compiler removed (unused under this program's defines) stays a silent no-op, as GL has it.
+// throws RuntimeError naming the program and the name instead (for programs made while the
+// checks are on: only they keep their sources). A declared uniform that the compiler removed
+// (unused under this program's defines) stays a silent no-op, as GL has it.
 #pragma once
 
 #include <memory>

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 
+#include "core/check.h"
 #include "core/error.h"
 
 namespace mirage {
@@ -54,7 +55,8 @@ std::string ParamSpec::rangeText() const {
 }
 
 void choiceMissing(const std::string& name, const std::string& value) {
-  throwRuntime("internal error: --{} {}: the method's table of choices lacks it", name, value);
+  detail::checkFailed(__FILE__, __LINE__, "the table of choices holds the value",
+                      fmt::format("--{} {}", name, value));
 }
 
 void checkParam(const ParamSpec& spec, const std::string& value) {

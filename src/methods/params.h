@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "core/check.h"
+
 namespace mirage {
 
 // One value of a choice parameter and what it means to the method that reads it. A method lists
@@ -56,7 +58,7 @@ class ParamValues {
   double real(const std::string& name) const;
   const std::string& text(const std::string& name) const;
   // A choice parameter's value read through its table; a value the table lacks (the table and
-  // the spec disagree: a bug) fails a check naming the parameter.
+  // the spec disagree: a bug) is an internal error (core/check.h) naming the parameter.
   template <typename E>
   E choice(const std::string& name, std::span<const Choice<E>> choices) const;
   // An on|off choice parameter.
@@ -82,6 +84,7 @@ ParamSpec ParamSpec::choice(std::string name, std::span<const Choice<E>> choices
     names.emplace_back(c.name);
     if (c.value == def) def_name = c.name;
   }
+  MIRAGE_CHECK(!def_name.empty());  // the default is one of the table's values
   return choice(std::move(name), std::move(names), std::move(def_name), std::move(help));
 }
 
