@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/commands.h"
 #include "core/display.h"
 #include "core/frame_settings.h"
 #include "gpu/context.h"
@@ -34,12 +35,32 @@ struct FrameArgs {
   int ssaa = 1;  // --ssaa N: render N x N sub-pixels per output pixel (render, compare, view)
 };
 
+// What every rendering command (render, compare, bench, view) reads: the scene, the frame, and
+// the methods' parameters.
+struct RenderingArgs {
+  SceneArgs scene;
+  FrameArgs frame;
+  std::map<std::string, std::string> params;  // method parameters given, by name
+};
+
 void addSceneOptions(CLI::App* app, SceneArgs& args);
 void addFrameOptions(CLI::App* app, FrameArgs& args);
 // --ssaa N (1..8) for the commands that measure or show quality (bench times the output size).
 void addSsaaOption(CLI::App* app, FrameArgs& args);
 // Registers --<name> for every method parameter; given values land in `values`.
 void addMethodParamOptions(CLI::App* app, std::map<std::string, std::string>& values);
+
+// A rendering subcommand of `parent` with the scene's options first: its options write into a
+// new `args`, which the command's run callback is to keep alive.
+template <class Args>
+Command renderingCommand(CLI::App& parent, const std::string& name, const std::string& help,
+                         std::shared_ptr<Args>& args) {
+  args = std::make_shared<Args>();
+  Command cmd;
+  cmd.app = parent.add_subcommand(name, help);
+  addSceneOptions(cmd.app, args->scene);
+  return cmd;
+}
 
 // "WxH" with 1 <= W, H <= 16384; throws InputError naming the option.
 ivec2 parseSize(const std::string& text);

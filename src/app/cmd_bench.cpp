@@ -21,16 +21,13 @@ namespace mirage::app {
 
 namespace {
 
-struct BenchArgs {
-  SceneArgs scene;
-  FrameArgs frame;
+struct BenchArgs : RenderingArgs {
   std::string methods = "none,envmap,raytrace";
   int frames = 100;
   int warmup = 5;
   double fps = 0.0;  // > 0: the scene plays, frame i at --time + i / fps
   double raytrace_budget_s = 20.0;
   std::string json;
-  std::map<std::string, std::string> params;
 };
 
 struct Summary {
@@ -86,9 +83,7 @@ struct Run {
   std::map<std::string, double> counts;  // the sums of the timed frames' frameCounts
 };
 
-int runBench(BenchArgs& args) {
-  ivec2 size = parseSize(args.frame.size);
-  FrameSettings settings = frameSettings(args.frame);
+void validate(const BenchArgs& args) {
   if (args.frames < 1 || args.frames > 1000000)
     throwInput("--frames {}: allowed 1..1000000", args.frames);
   if (args.warmup < 0 || args.warmup > 100000)
@@ -97,20 +92,11 @@ int runBench(BenchArgs& args) {
     throwInput("--raytrace-budget {}: must be > 0", args.raytrace_budget_s);
   if (!(args.fps >= 0.0 && args.fps <= 1000.0))
     throwInput("--fps {}: allowed 0..1000 (0: a still frame)", args.fps);
-  std::vector<std::string> names = parseMethodList(args.methods);
-  warnUnusedParams(args.params, names);
-  Scene scene = loadSceneFromArgs(args.scene);
-  const CameraDesc& camera = scene.camera(args.scene.camera);
-  // Timed frame f's time: still at --time, or playing at --fps (the scene and the camera's path)
-  // from the frame after the warm-up's, so that every timed frame shows a new time.
-  auto timeOf = [&](int f) {
-    return args.fps > 0.0 ? args.scene.time + float(double(f + 1) / args.fps) : args.scene.time;
-  };
-  const View view(camera.at(args.scene.time), size);
-  auto context = openHeadlessContext();
-  FrameRenderer renderer(scene, size);
-  gpu::Clock gpu_clock = gpu::defaultClock(context->info().software);
+}
 
+std::vector<Run> createRuns(FrameRenderer& renderer, const std::vector<std::string>& names,
+                            const BenchArgs& args, const FrameSettings& settings,
+                            gpu::Clock gpu_clock) {
   std::vector<Run> runs;
   for (const std::string& name : names) {
     Run r;
@@ -121,13 +107,18 @@ int runBench(BenchArgs& args) {
     r.frames = args.frames;
     runs.push_back(std::move(r));
   }
-  // Warm-up: first frames (captures, BVH builds, shader compilation in the driver).
+  return runs;
+}
+
+// Warm-up: first frames (captures, BVH builds, shader compilation in the driver). The CPU
+// reference is then given as many timed frames as its budget affords.
+void warmUp(std::vector<Run>& runs, FrameRenderer& renderer, const View& view,
+            const BenchArgs& args, const FrameSettings& settings) {
   for (Run& r : runs) {
     Stopwatch first;
     for (int i = 0; i < std::max(args.warmup, 1); ++i)
       renderer.render(*r.method, view, args.scene.time, settings);
     glFinish();
-    // The CPU reference is timed on as many frames as the budget affords.
     if (!r.method->info().gpu) {
       double per_frame_s = first.ms() / 1000.0 / double(std::max(args.warmup, 1));
       // Clamped as a double: a budget of 1e9 s affords more frames than an int holds.
@@ -136,22 +127,39 @@ int runBench(BenchArgs& args) {
     }
     r.reflector_pixels = countNonZero(renderer.read().ids);
   }
+}
+
+// What the timed frames leave besides each method's times.
+struct TimedFrames {
+  std::vector<double> scene_ms;  // the playing scene's shared update, per frame
+  std::vector<Resources> resources;
+};
+
+// The timed frames, interleaved across methods. A playing scene moves once per frame, before the
+// methods draw it: what every method shares (transforms, deformed vertices, the light) is timed
+// apart from each method's update.
+TimedFrames timeFrames(std::vector<Run>& runs, FrameRenderer& renderer, const CameraDesc& camera,
+                       ivec2 size, const BenchArgs& args, const FrameSettings& settings) {
+  // Timed frame f's time: still at --time, or playing at --fps (the scene and the camera's path)
+  // from the frame after the warm-up's, so that every timed frame shows a new time.
+  auto timeOf = [&](int f) {
+    return args.fps > 0.0 ? args.scene.time + float(double(f + 1) / args.fps) : args.scene.time;
+  };
   size_t total = 0;
   for (const Run& r : runs) total += size_t(r.frames);
   Progress progress("bench", total);
-  // A playing scene moves once per frame, before the methods draw it: what every method shares
-  // (transforms, deformed vertices, the light) is timed apart from each method's update.
-  std::vector<double> scene_ms;
-  std::vector<Resources> resources{resourcesAt(0)};
+  const View still(camera.at(args.scene.time), size);
+  TimedFrames out;
+  out.resources.push_back(resourcesAt(0));
   for (int f = 0; f < args.frames; ++f) {
     const float time = timeOf(f);
     if (args.fps > 0.0) {
       Stopwatch watch;
       renderer.gpu().setTime(time);
       glFinish();
-      scene_ms.push_back(watch.ms());
+      out.scene_ms.push_back(watch.ms());
     }
-    const View frame_view = args.fps > 0.0 ? View(camera.at(time), size) : view;
+    const View frame_view = args.fps > 0.0 ? View(camera.at(time), size) : still;
     for (Run& r : runs) {
       if (f >= r.frames) continue;
       std::map<std::string, double> counts;
@@ -159,52 +167,63 @@ int runBench(BenchArgs& args) {
       for (const auto& [name, n] : counts) r.counts[name] += n;
       progress.advance();
     }
-    if (isCheckpoint(f + 1, args.frames)) resources.push_back(resourcesAt(f + 1));
+    if (isCheckpoint(f + 1, args.frames)) out.resources.push_back(resourcesAt(f + 1));
   }
+  return out;
+}
 
-  nlohmann::json methods = nlohmann::json::object();
-  std::map<std::string, double> medians;
-  std::map<std::string, nlohmann::json> entries;
-  for (Run& r : runs) {
-    std::vector<gpu::FrameTimes> times = r.timer->takeResults();
-    std::vector<double> total_ms;
-    std::array<std::vector<double>, gpu::kPartCount> parts;
-    for (const auto& t : times) {
-      total_ms.push_back(t.total_ms);
-      for (int p = 0; p < gpu::kPartCount; ++p) parts[size_t(p)].push_back(t.part_ms[size_t(p)]);
-    }
-    Summary s = summarize(total_ms);
-    medians[r.name] = s.median;
-    nlohmann::json e;
-    e["ms"] = {{"min", s.min}, {"median", s.median}, {"p95", s.p95}};
-    nlohmann::json ms_parts, ms_parts_p95;
-    for (int p = 0; p < gpu::kPartCount; ++p) {
-      const Summary part = summarize(parts[size_t(p)]);
-      ms_parts[gpu::partName(gpu::Part(p))] = part.median;
-      ms_parts_p95[gpu::partName(gpu::Part(p))] = part.p95;
-    }
-    e["ms_parts"] = ms_parts;
-    e["ms_parts_p95"] = ms_parts_p95;
-    e["fps"] = orNull(1000.0 / s.median);
-    e["frames"] = r.frames;
-    e["clock"] = gpu::clockName(r.timer->clock());
-    e["reflector_pixels"] = r.reflector_pixels;
-    e["reflected_rays_per_s"] = orNull(double(r.reflector_pixels) * 1000.0 / s.median);
-    e["order_rendered"] = r.method->orderRendered(settings.order);
-    if (const std::string why = r.method->fallbackReason(); !why.empty()) e["fallback"] = why;
-    nlohmann::json stats = nlohmann::json::object(), per_frame = nlohmann::json::object();
-    for (const auto& [k, v] : r.method->stats()) stats[k] = orNull(v);
-    // The work of a timed frame (re-captures, rebuilds, warped zexels...), on average.
-    for (const auto& [k, sum] : r.counts) per_frame[k] = orNull(sum / double(r.frames));
-    e["stats"] = stats;
-    e["counts_per_frame"] = per_frame;
-    entries[r.name] = e;
+nlohmann::json summaryJson(const Summary& s) {
+  return {{"min", s.min}, {"median", s.median}, {"p95", s.p95}};
+}
+
+// One method's entry: its times (whole frame and parts), counts, stats and fallback.
+nlohmann::json methodEntry(Run& r, const FrameSettings& settings) {
+  std::vector<gpu::FrameTimes> times = r.timer->takeResults();
+  std::vector<double> total_ms;
+  std::array<std::vector<double>, gpu::kPartCount> parts;
+  for (const auto& t : times) {
+    total_ms.push_back(t.total_ms);
+    for (int p = 0; p < gpu::kPartCount; ++p) parts[size_t(p)].push_back(t.part_ms[size_t(p)]);
   }
+  const Summary s = summarize(total_ms);
+  nlohmann::json e;
+  e["ms"] = summaryJson(s);
+  nlohmann::json ms_parts, ms_parts_p95;
+  for (int p = 0; p < gpu::kPartCount; ++p) {
+    const Summary part = summarize(parts[size_t(p)]);
+    ms_parts[gpu::partName(gpu::Part(p))] = part.median;
+    ms_parts_p95[gpu::partName(gpu::Part(p))] = part.p95;
+  }
+  e["ms_parts"] = ms_parts;
+  e["ms_parts_p95"] = ms_parts_p95;
+  e["fps"] = orNull(1000.0 / s.median);
+  e["frames"] = r.frames;
+  e["clock"] = gpu::clockName(r.timer->clock());
+  e["reflector_pixels"] = r.reflector_pixels;
+  e["reflected_rays_per_s"] = orNull(double(r.reflector_pixels) * 1000.0 / s.median);
+  e["order_rendered"] = r.method->orderRendered(settings.order);
+  if (const std::string why = r.method->fallbackReason(); !why.empty()) e["fallback"] = why;
+  nlohmann::json stats = nlohmann::json::object(), per_frame = nlohmann::json::object();
+  for (const auto& [k, v] : r.method->stats()) stats[k] = orNull(v);
+  // The work of a timed frame (re-captures, rebuilds, warped zexels...), on average.
+  for (const auto& [k, sum] : r.counts) per_frame[k] = orNull(sum / double(r.frames));
+  e["stats"] = stats;
+  e["counts_per_frame"] = per_frame;
+  return e;
+}
+
+// Every method's entry, with its median as a ratio to the baselines measured in the same run.
+nlohmann::json methodsJson(std::vector<Run>& runs, const FrameSettings& settings) {
+  std::map<std::string, nlohmann::json> entries;
+  for (Run& r : runs) entries[r.name] = methodEntry(r, settings);
+  auto median = [&](const std::string& name) {
+    return entries[name]["ms"]["median"].get<double>();
+  };
+  nlohmann::json methods = nlohmann::json::object();
   for (Run& r : runs) {
     nlohmann::json& e = entries[r.name];
     auto ratio = [&](const char* base) {
-      auto it = medians.find(base);
-      return it == medians.end() ? nlohmann::json(nullptr) : orNull(medians[r.name] / it->second);
+      return entries.count(base) ? orNull(median(r.name) / median(base)) : nlohmann::json(nullptr);
     };
     e["ratio_to_none"] = ratio("none");
     e["ratio_to_envmap"] = ratio("envmap");
@@ -214,10 +233,34 @@ int runBench(BenchArgs& args) {
                  e["ms"]["median"].get<double>(), e["ms"]["min"].get<double>(),
                  e["ms"]["p95"].get<double>(), r.frames);
   }
+  return methods;
+}
+
+// Resources held at each checkpoint, and a line that says whether they grew.
+nlohmann::json resourcesJson(const std::vector<Resources>& resources) {
+  nlohmann::json held = nlohmann::json::array();
+  for (const Resources& r : resources)
+    held.push_back({{"frame", r.frame},
+                    {"rss_mib", r.rss_mib},
+                    {"gl_handles", r.handles},
+                    {"gl_objects", r.gl_objects}});
+  const Resources &first = resources.front(), &last = resources.back();
+  spdlog::info(
+      "resources: RSS {:.1f} -> {:.1f} MiB, GL objects {} -> {}, handles {} -> {} "
+      "(frames 0 -> {})",
+      first.rss_mib, last.rss_mib, first.gl_objects, last.gl_objects, first.handles, last.handles,
+      last.frame);
+  return held;
+}
+
+// The run's description: scene, machine and settings.
+nlohmann::json runJson(const Scene& scene, ivec2 size, const gpu::GlInfo& info,
+                       const BenchArgs& args, const FrameSettings& settings,
+                       const CameraDesc& camera) {
   nlohmann::json j;
   j["scene"] = scene.name;
   j["size"] = {size.x, size.y};
-  j["device"] = context->info().renderer + " (" + context->info().version + ")";
+  j["device"] = info.renderer + " (" + info.version + ")";
   j["cpu"] = cpuDescription();
   j["allocator"] = processAllocator();
   const char* lp = std::getenv("LP_NUM_THREADS");
@@ -231,24 +274,28 @@ int runBench(BenchArgs& args) {
   j["time"] = args.scene.time;
   j["fps"] = args.fps;
   j["camera"] = camera.name;
-  if (args.fps > 0.0) {
-    const Summary s = summarize(scene_ms);
-    j["scene_update_ms"] = {{"min", s.min}, {"median", s.median}, {"p95", s.p95}};
-  }
-  j["methods"] = methods;
-  nlohmann::json held = nlohmann::json::array();
-  for (const Resources& r : resources)
-    held.push_back({{"frame", r.frame},
-                    {"rss_mib", r.rss_mib},
-                    {"gl_handles", r.handles},
-                    {"gl_objects", r.gl_objects}});
-  j["resources"] = held;
-  const Resources &first = resources.front(), &last = resources.back();
-  spdlog::info(
-      "resources: RSS {:.1f} -> {:.1f} MiB, GL objects {} -> {}, handles {} -> {} "
-      "(frames 0 -> {})",
-      first.rss_mib, last.rss_mib, first.gl_objects, last.gl_objects, first.handles, last.handles,
-      last.frame);
+  return j;
+}
+
+int runBench(BenchArgs& args) {
+  ivec2 size = parseSize(args.frame.size);
+  FrameSettings settings = frameSettings(args.frame);
+  validate(args);
+  std::vector<std::string> names = parseMethodList(args.methods);
+  warnUnusedParams(args.params, names);
+  Scene scene = loadSceneFromArgs(args.scene);
+  const CameraDesc& camera = scene.camera(args.scene.camera);
+  auto context = openHeadlessContext();
+  FrameRenderer renderer(scene, size);
+  std::vector<Run> runs =
+      createRuns(renderer, names, args, settings, gpu::defaultClock(context->info().software));
+  warmUp(runs, renderer, View(camera.at(args.scene.time), size), args, settings);
+  const TimedFrames timed = timeFrames(runs, renderer, camera, size, args, settings);
+
+  nlohmann::json j = runJson(scene, size, context->info(), args, settings, camera);
+  if (args.fps > 0.0) j["scene_update_ms"] = summaryJson(summarize(timed.scene_ms));
+  j["methods"] = methodsJson(runs, settings);
+  j["resources"] = resourcesJson(timed.resources);
   writeFileAtomic(args.json, j.dump(2) + "\n");
   return 0;
 }
@@ -256,10 +303,9 @@ int runBench(BenchArgs& args) {
 }  // namespace
 
 Command addBenchCommand(CLI::App& parent) {
-  auto args = std::make_shared<BenchArgs>();
-  Command cmd;
-  cmd.app = parent.add_subcommand("bench", "time several methods on the same frames, in one run");
-  addSceneOptions(cmd.app, args->scene);
+  std::shared_ptr<BenchArgs> args;
+  Command cmd = renderingCommand(parent, "bench",
+                                 "time several methods on the same frames, in one run", args);
   cmd.app->add_option("--methods", args->methods, "all, or a comma-separated list of methods")
       ->capture_default_str();
   cmd.app->add_option("--frames", args->frames, "timed frames per method (1..1000000)")

@@ -16,9 +16,7 @@ namespace mirage::app {
 
 namespace {
 
-struct CompareArgs {
-  SceneArgs scene;
-  FrameArgs frame;
+struct CompareArgs : RenderingArgs {
   std::string methods = "all";
   std::string reference = "raytrace";
   int path_frames = 0;
@@ -26,7 +24,6 @@ struct CompareArgs {
   int reference_spp = 64;
   std::string output;
   float heatmap_max = 0.25f;
-  std::map<std::string, std::string> params;
   const CLI::Option* time_option = nullptr;  // to tell a given --time from the default
 };
 
@@ -234,11 +231,10 @@ MapFiles writeMaps(const CompareRun& run, const std::string& stem, const Image& 
 }
 
 Command addCompareCommand(CLI::App& parent) {
-  auto args = std::make_shared<CompareArgs>();
-  Command cmd;
-  cmd.app = parent.add_subcommand(
-      "compare", "render a scene with several methods and measure each against a reference");
-  addSceneOptions(cmd.app, args->scene);
+  std::shared_ptr<CompareArgs> args;
+  Command cmd = renderingCommand(
+      parent, "compare", "render a scene with several methods and measure each against a reference",
+      args);
   args->time_option = cmd.app->get_option("--time");
   std::string names;
   for (const std::string& n : methodNames()) names += (names.empty() ? "" : ",") + n;

@@ -18,14 +18,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct RenderArgs {
-  SceneArgs scene;
-  FrameArgs frame;
+struct RenderArgs : RenderingArgs {
   std::string method;
   std::string output;
   int frames = 1;
   double fps = 30.0;
-  std::map<std::string, std::string> params;
 };
 
 // A temporary folder for an MP4's PNG frames, removed with everything in it.
@@ -124,11 +121,10 @@ int runRender(RenderArgs& args) {
 }  // namespace
 
 Command addRenderCommand(CLI::App& parent) {
-  auto args = std::make_shared<RenderArgs>();
-  Command cmd;
-  cmd.app = parent.add_subcommand(
-      "render", "render one image of a scene with one method, or a sequence of frames");
-  addSceneOptions(cmd.app, args->scene);
+  std::shared_ptr<RenderArgs> args;
+  Command cmd = renderingCommand(
+      parent, "render", "render one image of a scene with one method, or a sequence of frames",
+      args);
   cmd.app->add_option("--method", args->method, "the method (see `mirage compare --help`)")
       ->required();
   addFrameOptions(cmd.app, args->frame);

@@ -13,9 +13,7 @@ namespace mirage::app {
 
 namespace {
 
-struct ViewArgs {
-  SceneArgs scene;
-  FrameArgs frame;
+struct ViewArgs : RenderingArgs {
   std::string method = "envmap";
   int frames = 0;
   std::string screenshot;
@@ -27,13 +25,32 @@ struct ViewArgs {
   std::string truth = "off";
   bool heatmap = false;
   int truth_divisor = 2;
-  std::map<std::string, std::string> params;
+};
+
+// The viewer's input and output files beyond its screenshots, each an option of a path.
+struct PathOption {
+  const char* name;
+  std::string ViewArgs::*field;
+  const char* help;
+};
+const PathOption kPathOptions[] = {
+    {"--events", &ViewArgs::events,
+     "an event script (keys, buttons, cursor, wheel by frame) to replay"},
+    {"--record-events", &ViewArgs::record_events,
+     "write the window's input here as an event script at exit"},
+    {"--record-path", &ViewArgs::record_path,
+     "record the camera from the start into this camera file (written at exit or when P stops "
+     "the recording)"},
+    {"--play-path", &ViewArgs::play_path,
+     "play this camera file's path from the start (L plays it again)"},
+    {"--report", &ViewArgs::report,
+     "at exit, write a JSON report: frame times, GL object counts at the first and last frame, "
+     "the camera, the reference's PSNR"},
 };
 
 TruthMode parseTruthMode(const std::string& text) {
-  for (TruthMode m : {TruthMode::kOff, TruthMode::kSplit, TruthMode::kFlip})
-    if (text == truthModeName(m)) return m;
-  throwInput("--truth {}: allowed off|split|flip", text);
+  if (const auto mode = findChoice<TruthMode>(kTruthModes, text)) return *mode;
+  throwInput("--truth {}: allowed {}", text, choiceNames<TruthMode>(kTruthModes, "|"));
 }
 
 int runView(ViewArgs& args) {
@@ -92,13 +109,12 @@ int runView(ViewArgs& args) {
 }  // namespace
 
 Command addViewCommand(CLI::App& parent) {
-  auto args = std::make_shared<ViewArgs>();
-  Command cmd;
-  cmd.app = parent.add_subcommand(
-      "view",
+  std::shared_ptr<ViewArgs> args;
+  Command cmd = renderingCommand(
+      parent, "view",
       "the interactive viewer: any method, live parameters, fly/orbit camera, scene time, the "
-      "ray-traced ground truth beside the frame");
-  addSceneOptions(cmd.app, args->scene);
+      "ray-traced ground truth beside the frame",
+      args);
   cmd.app->add_option("--method", args->method, "the method shown first")->capture_default_str();
   addFrameOptions(cmd.app, args->frame);
   addSsaaOption(cmd.app, args->frame);
@@ -114,18 +130,7 @@ Command addViewCommand(CLI::App& parent) {
   cmd.app->add_option("--screenshot-dir", args->screenshot_dir,
                       "where F12 writes screenshots and P camera paths (default: next to the "
                       "scene file, or the current folder)");
-  cmd.app->add_option("--events", args->events,
-                      "an event script (keys, buttons, cursor, wheel by frame) to replay");
-  cmd.app->add_option("--record-events", args->record_events,
-                      "write the window's input here as an event script at exit");
-  cmd.app->add_option("--record-path", args->record_path,
-                      "record the camera from the start into this camera file (written at exit "
-                      "or when P stops the recording)");
-  cmd.app->add_option("--play-path", args->play_path,
-                      "play this camera file's path from the start (L plays it again)");
-  cmd.app->add_option("--report", args->report,
-                      "at exit, write a JSON report: frame times, GL object counts at the first "
-                      "and last frame, the camera, the reference's PSNR");
+  for (const PathOption& o : kPathOptions) cmd.app->add_option(o.name, (*args).*o.field, o.help);
   cmd.app->add_option("--truth", args->truth, "the ground truth at the start: off|split|flip")
       ->capture_default_str();
   cmd.app->add_flag("--heatmap", args->heatmap, "start with the error heat map on");

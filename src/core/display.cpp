@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "core/choices.h"
 #include "core/error.h"
 #include "shading/tonemap.h"
 
@@ -16,23 +17,20 @@ Image toDisplay(const Image& linear, const DisplaySettings& settings) {
   return out;
 }
 
+namespace {
+
+constexpr Choice<ToneMap> kToneMaps[] = {
+    {"clamp", ToneMap::kClamp}, {"reinhard", ToneMap::kReinhard}, {"aces", ToneMap::kAces}};
+
+}  // namespace
+
 ToneMap parseToneMap(const std::string& name) {
-  if (name == "clamp") return ToneMap::kClamp;
-  if (name == "reinhard") return ToneMap::kReinhard;
-  if (name == "aces") return ToneMap::kAces;
-  throwInput("--tonemap {}: unknown tone map (allowed: clamp, reinhard, aces)", name);
+  if (const auto tonemap = findChoice<ToneMap>(kToneMaps, name)) return *tonemap;
+  throwInput("--tonemap {}: unknown tone map (allowed: {})", name, choiceNames<ToneMap>(kToneMaps));
 }
 
 const char* toneMapName(ToneMap tonemap) {
-  switch (tonemap) {
-    case ToneMap::kClamp:
-      return "clamp";
-    case ToneMap::kReinhard:
-      return "reinhard";
-    case ToneMap::kAces:
-      return "aces";
-  }
-  return "?";
+  return choiceName<ToneMap>(kToneMaps, tonemap);
 }
 
 void writeImage(const std::string& path, const Image& linear, const DisplaySettings& settings) {

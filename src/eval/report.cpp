@@ -324,40 +324,61 @@ std::string reportHtml(const CompareReport& r) {
         escape(ref->name), escape(ref->description), escape(ref->image), cell(ref->ms, "{:.1f}"));
   for (const MethodReport& m : r.methods)
     if (&m != ref) figures += methodFigures(r, m, ref);
+  PageParts parts;
+  parts.title = r.scene;
+  parts.reference_section = reference_section;
+  parts.metrics = metricsSection(
+      r, "Metrics", kColumns,
+      R"(&uarr; higher is better, &darr; lower is better. Green: the best value of each column
+among the methods other than the reference. Click a column header to sort (the reference stays
+on top).)");
+  parts.figures = figures;
+  return reportPage(r, parts);
+}
+
+namespace report_html {
+
+std::string metricsSection(const CompareReport& r, const std::string& title,
+                           std::span<const Column> columns, const std::string& note) {
+  return fmt::format(R"(<section id=metrics><h2>{}</h2>
+<table><thead><tr>{}</tr></thead><tbody>
+{}</tbody></table>
+<p class=d>{}</p>
+</section>)",
+                     title, tableHeader(columns), tableRows(r, columns), note);
+}
+
+std::string reportPage(const CompareReport& r, const PageParts& parts) {
   return fmt::format(
       R"(<!doctype html>
 <html lang=en><head><meta charset=utf-8><meta name=viewport content="width=device-width">
-<title>mirage compare: {scene}</title>
+<title>mirage compare: {title}</title>
 {style}</head><body>
 <h1>{scene}</h1>
 <p class=d>{desc}</p>
-<p>{w}&times;{h} pixels, {tris} triangles, reflection order K = {order},
-reference: <b>{reference}</b>.
-Device: {device}; CPU: {cpu}. Images after the display transform ({tonemap}); all metrics on those
-values.</p>
+<p>{w}&times;{h} pixels, {tris} triangles, reflection order K = {order}, reference: <b>{reference}</b>.
+{setup}Device: {device}; CPU: {cpu}. Images after the display transform ({tonemap}); all metrics on those
+values.{kept}</p>
 {sampling}
-{reference_section}<section id=metrics><h2>Metrics</h2>
-<table><thead><tr>{header}</tr></thead><tbody>
-{rows}</tbody></table>
-<p class=d>&uarr; higher is better, &darr; lower is better. Green: the best value of each column
-among the methods other than the reference. Click a column header to sort (the reference stays
-on top).</p>
-</section>
+{reference_section}{metrics}
 {regions}{reading}<section id=methods><h2>Methods against the reference</h2>
 {figures}</section>
 <script>{script}</script>
 </body></html>
 )",
-      fmt::arg("scene", escape(r.scene)), fmt::arg("desc", escape(r.scene_description)),
-      fmt::arg("style", pageStyle()), fmt::arg("w", r.size.x), fmt::arg("h", r.size.y),
-      fmt::arg("tris", r.triangles), fmt::arg("order", r.order),
-      fmt::arg("reference", escape(r.reference)), fmt::arg("device", escape(r.device)),
+      fmt::arg("title", escape(parts.title)), fmt::arg("scene", escape(r.scene)),
+      fmt::arg("desc", escape(r.scene_description)), fmt::arg("style", pageStyle()),
+      fmt::arg("w", r.size.x), fmt::arg("h", r.size.y), fmt::arg("tris", r.triangles),
+      fmt::arg("order", r.order), fmt::arg("reference", escape(r.reference)),
+      fmt::arg("setup", parts.setup), fmt::arg("device", escape(r.device)),
       fmt::arg("cpu", escape(r.cpu)), fmt::arg("tonemap", escape(r.tonemap)),
-      fmt::arg("reference_section", reference_section), fmt::arg("header", tableHeader(kColumns)),
-      fmt::arg("rows", tableRows(r, kColumns)), fmt::arg("figures", figures),
-      fmt::arg("reading", readingSection(r)), fmt::arg("script", kScript),
-      fmt::arg("sampling", samplingNote(r)), fmt::arg("regions", regionSections(r)));
+      fmt::arg("kept", parts.kept), fmt::arg("sampling", samplingNote(r)),
+      fmt::arg("reference_section", parts.reference_section), fmt::arg("metrics", parts.metrics),
+      fmt::arg("regions", regionSections(r)), fmt::arg("reading", readingSection(r)),
+      fmt::arg("figures", parts.figures), fmt::arg("script", kScript));
 }
+
+}  // namespace report_html
 
 void writeCompareReport(const std::string& directory, const CompareReport& report) {
   std::filesystem::path dir(directory);

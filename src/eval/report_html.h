@@ -52,6 +52,18 @@ nlohmann::json referenceJson(const CompareReport& r);
 std::string samplingNote(const CompareReport& r);
 std::string regionSections(const CompareReport& r);
 
+// The #metrics section: its title, the table of `columns` and a note under it.
+std::string metricsSection(const CompareReport& r, const std::string& title,
+                           std::span<const Column> columns, const std::string& note);
+// A compare page: the header every page has (the scene; size, triangles, order and reference,
+// then `setup`, what was run; the machine and the display transform, then `kept`, which images
+// are kept; the sampling note), then `reference_section`, the `metrics` sections, the regions,
+// the reading notes and the methods' `figures`. `title` follows "mirage compare: ".
+struct PageParts {
+  std::string title, setup, kept, reference_section, metrics, figures;
+};
+std::string reportPage(const CompareReport& r, const PageParts& parts);
+
 // The camera-path additions: "path" at the top, "worst", "per_frame" and "images" per method.
 void addPathJson(const CompareReport& r, nlohmann::json& j);
 std::string pathReportHtml(const CompareReport& r);

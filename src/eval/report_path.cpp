@@ -264,47 +264,26 @@ std::string pathReportHtml(const CompareReport& r) {
   for (const MethodReport& m : r.methods)
     if (&m != ref) figures += methodFrames(r, m, ref);
   const float first = r.path.times.front(), last = r.path.times.back();
-  return fmt::format(
-      R"(<!doctype html>
-<html lang=en><head><meta charset=utf-8><meta name=viewport content="width=device-width">
-<title>mirage compare: {scene}, camera path</title>
-{style}</head><body>
-<h1>{scene}</h1>
-<p class=d>{desc}</p>
-<p>{w}&times;{h} pixels, {tris} triangles, reflection order K = {order}, reference: <b>{reference}</b>.
-Camera path <b>{camera}</b>: {frames} frames from t = {first:.2f} s to {last:.2f} s. Each method
+  PageParts parts;
+  parts.title = r.scene + ", camera path";
+  parts.setup = fmt::format(
+      R"(Camera path <b>{}</b>: {} frames from t = {:.2f} s to {:.2f} s. Each method
 renders the frames in order and keeps its state from one frame to the next, as in an animation.
-Device: {device}; CPU: {cpu}. Images after the display transform ({tonemap}); all metrics on those
-values. Images are kept for the first, middle and last frame.</p>
-{sampling}
-{reference_section}<section id=metrics><h2>Metrics over the path</h2>
-<table><thead><tr>{header}</tr></thead><tbody>
-{rows}</tbody></table>
-<p class=d>Mean: over the frames (frames without reflector pixels left out of the reflector
+)",
+      escape(r.path.camera), r.path.times.size(), first, last);
+  parts.kept = " Images are kept for the first, middle and last frame.";
+  parts.reference_section = ref ? referenceSection(r, *ref) : "";
+  parts.metrics =
+      metricsSection(
+          r, "Metrics over the path", kPathColumns,
+          R"(Mean: over the frames (frames without reflector pixels left out of the reflector
 figures). Worst: the lowest PSNR or SSIM, the highest FLIP of any frame. &uarr; higher is better,
 &darr; lower is better; green: the best of each column among the methods other than the
-reference. Click a column header to sort.</p>
-</section>
-<section id=frames><h2>Reflector PSNR per frame (dB)</h2>
-{frame_table}
-</section>
-{regions}{reading}<section id=methods><h2>Methods against the reference</h2>
-{figures}</section>
-<script>{script}</script>
-</body></html>
-)",
-      fmt::arg("scene", escape(r.scene)), fmt::arg("desc", escape(r.scene_description)),
-      fmt::arg("style", pageStyle()), fmt::arg("w", r.size.x), fmt::arg("h", r.size.y),
-      fmt::arg("tris", r.triangles), fmt::arg("order", r.order),
-      fmt::arg("reference", escape(r.reference)), fmt::arg("camera", escape(r.path.camera)),
-      fmt::arg("frames", r.path.times.size()), fmt::arg("first", first), fmt::arg("last", last),
-      fmt::arg("device", escape(r.device)), fmt::arg("cpu", escape(r.cpu)),
-      fmt::arg("tonemap", escape(r.tonemap)),
-      fmt::arg("reference_section", ref ? referenceSection(r, *ref) : ""),
-      fmt::arg("header", tableHeader(kPathColumns)), fmt::arg("rows", tableRows(r, kPathColumns)),
-      fmt::arg("frame_table", frameTable(r)), fmt::arg("reading", readingSection(r)),
-      fmt::arg("figures", figures), fmt::arg("script", kScript),
-      fmt::arg("sampling", samplingNote(r)), fmt::arg("regions", regionSections(r)));
+reference. Click a column header to sort.)") +
+      fmt::format("\n<section id=frames><h2>Reflector PSNR per frame (dB)</h2>\n{}\n</section>",
+                  frameTable(r));
+  parts.figures = figures;
+  return reportPage(r, parts);
 }
 
 }  // namespace report_html

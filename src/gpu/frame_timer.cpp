@@ -1,19 +1,14 @@
 #include "gpu/frame_timer.h"
 
+#include "core/choices.h"
 #include "core/error.h"
 
 namespace mirage::gpu {
 
 const char* partName(Part part) {
-  switch (part) {
-    case Part::kUpdate:
-      return "update";
-    case Part::kDirect:
-      return "direct";
-    case Part::kReflect:
-      return "reflect";
-  }
-  return "?";
+  static constexpr Choice<Part> kParts[] = {
+      {"update", Part::kUpdate}, {"direct", Part::kDirect}, {"reflect", Part::kReflect}};
+  return choiceName<Part>(kParts, part);
 }
 
 Clock defaultClock(bool software_renderer) {

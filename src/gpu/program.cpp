@@ -38,6 +38,15 @@ std::atomic<bool>& uniformChecksFlag() {
   return on;
 }
 
+// The compiler's or linker's messages about a shader or a program.
+std::string infoLog(GLuint id, bool is_program) {
+  GLint length = 0;
+  (is_program ? glGetProgramiv : glGetShaderiv)(id, GL_INFO_LOG_LENGTH, &length);
+  std::string log(size_t(std::max(length, 1)), '\0');
+  (is_program ? glGetProgramInfoLog : glGetShaderInfoLog)(id, length, nullptr, log.data());
+  return log;
+}
+
 Handle<ShaderTraits> compileStage(GLenum stage, const std::string& path,
                                   const std::vector<std::string>& defines, std::string& all_text) {
   ShaderSource source = loadShaderSource(path, defines);
@@ -48,14 +57,9 @@ Handle<ShaderTraits> compileStage(GLenum stage, const std::string& path,
   glCompileShader(shader.id());
   GLint ok = GL_FALSE;
   glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    GLint length = 0;
-    glGetShaderiv(shader.id(), GL_INFO_LOG_LENGTH, &length);
-    std::string log(size_t(std::max(length, 1)), '\0');
-    glGetShaderInfoLog(shader.id(), length, nullptr, log.data());
+  if (!ok)
     throwGpu("shader '{}' does not compile:\n{}", path,
-             annotateShaderLog(log.c_str(), source.files));
-  }
+             annotateShaderLog(infoLog(shader.id(), false).c_str(), source.files));
   return shader;
 }
 
@@ -66,13 +70,7 @@ Handle<ProgramTraits> link(const std::vector<GLuint>& shaders, const std::string
   for (GLuint s : shaders) glDetachShader(program.id(), s);
   GLint ok = GL_FALSE;
   glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
-  if (!ok) {
-    GLint length = 0;
-    glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &length);
-    std::string log(size_t(std::max(length, 1)), '\0');
-    glGetProgramInfoLog(program.id(), length, nullptr, log.data());
-    throwGpu("program '{}' does not link:\n{}", what, log.c_str());
-  }
+  if (!ok) throwGpu("program '{}' does not link:\n{}", what, infoLog(program.id(), true).c_str());
   return program;
 }
 

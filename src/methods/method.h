@@ -105,6 +105,14 @@ struct MethodEntry {
   MethodFactory create;
 };
 
+// The factory of method class M, made from the setup and `extra` (a variant, say).
+template <class M, class... Extra>
+MethodFactory factoryOf(Extra... extra) {
+  return [=](const MethodSetup& setup) -> std::unique_ptr<Method> {
+    return std::make_unique<M>(setup, extra...);
+  };
+}
+
 // Every method, in the order reports list them.
 const std::vector<MethodEntry>& methodRegistry();
 std::vector<std::string> methodNames();

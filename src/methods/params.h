@@ -9,18 +9,14 @@
 #include <vector>
 
 #include "core/check.h"
+#include "core/choices.h"
 
 namespace mirage {
 
-// One value of a choice parameter and what it means to the method that reads it. A method lists
-// its choices once, as a table, for the spec (ParamSpec::choice) and for reading the value into
-// its enum (ParamValues::choice), so that nothing compares the text with a literal:
+// A choice parameter's values and what each means to the method that reads it: a method lists
+// its choices once, as a table (core/choices.h), for the spec (ParamSpec::choice) and for reading
+// the value into its enum (ParamValues::choice), so that nothing compares the text with a literal:
 //   constexpr Choice<Warper> kWarpers[] = {{"gpu", Warper::kGpu}, {"cpu", Warper::kCpu}};
-template <typename E>
-struct Choice {
-  const char* name;
-  E value;
-};
 
 struct ParamSpec {
   enum class Type { kInt, kFloat, kChoice };
@@ -91,8 +87,7 @@ ParamSpec ParamSpec::choice(std::string name, std::span<const Choice<E>> choices
 template <typename E>
 E ParamValues::choice(const std::string& name, std::span<const Choice<E>> choices) const {
   const std::string& value = text(name);
-  for (const Choice<E>& c : choices)
-    if (value == c.name) return c.value;
+  if (const std::optional<E> e = findChoice(choices, value)) return *e;
   choiceMissing(name, value);
 }
 

@@ -201,11 +201,130 @@ TraceResult RayTracer::renderReference(const View& view, const TraceSettings& se
   return result;
 }
 
+// The sub-pixel positions of a pixel's samples: a stratified n x n grid holding spp samples,
+// jittered within their strata or at their centres.
+struct RayTracer::PixelSamples {
+  int spp = 1, grid = 1;
+  bool jitter = false;
+  // The sample whose ray is the pixel-centre ray, or -1: then the centre is traced on its own.
+  // The reference traces it separately whenever spp > 1; an odd grid has it among the samples.
+  int centre_sample = 0;
+
+  PixelSamples(const TraceSettings& settings, bool reference)
+      : spp(std::max(settings.spp, 1)),
+        grid(int(std::ceil(std::sqrt(double(spp))))),
+        jitter(settings.jitter && spp > 1),
+        centre_sample(spp == 1 ? 0 : -1) {
+    if (!reference && !jitter)
+      for (int s = 0; s < spp && centre_sample < 0; ++s)
+        if (offset(0, 0, s) == vec2(0.5f)) centre_sample = s;
+  }
+  vec2 offset(int x, int y, int s) const {
+    vec2 in_stratum(0.5f);
+    if (jitter) in_stratum = strataJitter(uint32_t(x), uint32_t(y), uint32_t(s));
+    float sx = spp == 1 ? 0.5f : (float(s % grid) + in_stratum.x) / float(grid);
+    float sy = spp == 1 ? 0.5f : (float(s / grid) + in_stratum.y) / float(grid);
+    return vec2(sx, sy);
+  }
+};
+
+// One worker's buffers, reused from tile to tile, and its ray counts.
+struct RayTracer::TileScratch {
+  // A reflector sample whose reflection pass 2 traces.
+  struct Pending {
+    Ray ray;
+    RayHit hit;
+    int pixel;
+  };
+  std::vector<Pending> pending;
+  std::vector<Ray> rays;  // the tile's primary rays, batched (not in the reference)
+  std::vector<RayHit> hits;
+  uint64_t primary = 0, reflected = 0;
+};
+
+namespace {
+
+constexpr int kTile = 16;
+
+// The tile's pixels: [x0, x1) x [y0, y1).
+struct TileRect {
+  int x0, y0, x1, y1;
+};
+
+TileRect tileRect(int tx, int ty, ivec2 size) {
+  return {tx * kTile, ty * kTile, std::min((tx + 1) * kTile, size.x),
+          std::min((ty + 1) * kTile, size.y)};
+}
+
+}  // namespace
+
 // Primary rays go to Embree 16 at a time with the incoherent flag (RayScene::intersect(rays,
 // hits, n)), which returns rtcIntersect1's hits and is 1.5-1.7x faster on them. Coherent
 // packets (frustum traversal, packet triangle tests) would be faster still but return other hits
 // on edges and ties: the ground truth must not depend on how rays are batched. Reflected rays
 // stay single: packets gain little on them. docs/benchmarks.md has the measurements.
+void RayTracer::traceTilePrimaries(const View& view, const PixelSamples& samples, int tx, int ty,
+                                   TileScratch& scratch) const {
+  const TileRect t = tileRect(tx, ty, view.size());
+  // The tile's primary rays, in the order shadeTilePrimaries takes them.
+  scratch.rays.clear();
+  for (int y = t.y0; y < t.y1; ++y)
+    for (int x = t.x0; x < t.x1; ++x) {
+      for (int s = 0; s < samples.spp; ++s) {
+        vec2 o = samples.offset(x, y, s);
+        scratch.rays.push_back(view.primaryRay(float(x) + o.x, float(y) + o.y));
+      }
+      if (samples.centre_sample < 0)
+        scratch.rays.push_back(view.primaryRay(float(x) + 0.5f, float(y) + 0.5f));
+    }
+  scratch.hits.resize(scratch.rays.size());
+  ray_scene_.intersect(scratch.rays.data(), scratch.hits.data(), scratch.rays.size());
+}
+
+// Pass 1: primary rays; diffuse surfaces and the sky are shaded at once, reflector samples are
+// kept for pass 2. Every pixel's id and distance come from its centre, as the rasteriser's do.
+template <bool kReference>
+void RayTracer::shadeTilePrimaries(const View& view, const PixelSamples& samples, int tx, int ty,
+                                   TileScratch& scratch, TraceResult& result) const {
+  const ivec2 size = view.size();
+  const TileRect t = tileRect(tx, ty, size);
+  size_t next = 0;  // the next of scratch.rays/hits
+  for (int y = t.y0; y < t.y1; ++y)
+    for (int x = t.x0; x < t.x1; ++x) {
+      int pixel = y * size.x + x;
+      vec3 sum(0.0f);
+      RayHit centre_hit;
+      for (int s = 0; s < samples.spp; ++s) {
+        Ray ray;
+        RayHit hit;
+        if (kReference) {
+          vec2 o = samples.offset(x, y, s);
+          ray = view.primaryRay(float(x) + o.x, float(y) + o.y);
+          hit = ray_scene_.intersect(ray);
+        } else {
+          ray = scratch.rays[next];
+          hit = scratch.hits[next++];
+        }
+        ++scratch.primary;
+        if (s == samples.centre_sample) centre_hit = hit;
+        if (!hit.hit())
+          sum += environment_.sample(ray.direction);
+        else if (reflector_id_[size_t(hit.instance)] == 0)
+          sum += shadeHit<kReference>(ray, hit, 0, scratch.reflected);
+        else
+          scratch.pending.push_back({ray, hit, pixel});
+      }
+      if (samples.centre_sample < 0)
+        centre_hit = kReference
+                         ? ray_scene_.intersect(view.primaryRay(float(x) + 0.5f, float(y) + 0.5f))
+                         : scratch.hits[next++];
+      result.ids(x, y) =
+          centre_hit.hit() ? uint32_t(reflector_id_[size_t(centre_hit.instance)]) : 0u;
+      float distance = centre_hit.hit() ? centre_hit.t : sh::MISS_DISTANCE;
+      result.color(x, y) = vec4(sum / float(samples.spp), distance);
+    }
+}
+
 template <bool kReference>
 void RayTracer::renderTiles(const View& view, const TraceSettings& settings,
                             TraceResult& result) const {
@@ -214,112 +333,35 @@ void RayTracer::renderTiles(const View& view, const TraceSettings& settings,
   if (result.color.size() != size) result.color = Image(size.x, size.y);
   if (result.ids.size() != size) result.ids = IdImage(size.x, size.y);
   result.stats = {};
-  // Stratified sub-pixel positions: an n x n grid holding spp samples.
-  const int spp = std::max(settings.spp, 1);
-  const int grid = int(std::ceil(std::sqrt(double(spp))));
-  const bool jitter = settings.jitter && spp > 1;
-  auto offset = [&](int x, int y, int s) {
-    vec2 in_stratum(0.5f);
-    if (jitter) in_stratum = strataJitter(uint32_t(x), uint32_t(y), uint32_t(s));
-    float sx = spp == 1 ? 0.5f : (float(s % grid) + in_stratum.x) / float(grid);
-    float sy = spp == 1 ? 0.5f : (float(s / grid) + in_stratum.y) / float(grid);
-    return vec2(sx, sy);
-  };
-  // The sample whose ray is the pixel-centre ray, or -1: then the centre is traced on its own.
-  // The reference traces it separately whenever spp > 1; an odd grid has it among the samples.
-  int centre_sample = spp == 1 ? 0 : -1;
-  if (!kReference && !jitter)
-    for (int s = 0; s < spp && centre_sample < 0; ++s)
-      if (offset(0, 0, s) == vec2(0.5f)) centre_sample = s;
-  constexpr int kTile = 16;
+  const PixelSamples samples(settings, kReference);
   const int tiles_x = (size.x + kTile - 1) / kTile, tiles_y = (size.y + kTile - 1) / kTile;
   Progress progress("raytrace", settings.progress ? size_t(tiles_x) * size_t(tiles_y) : 0);
   tbb::combinable<double> direct_cpu, reflect_cpu;
   std::atomic<uint64_t> primary_total{0}, reflected_total{0};
   Stopwatch wall;
-
-  struct Pending {
-    Ray ray;
-    RayHit hit;
-    int pixel;
-  };
   tbb::parallel_for(tbb::blocked_range2d<int>(0, tiles_y, 0, tiles_x), [&](const auto& range) {
-    std::vector<Pending> pending;
-    pending.reserve(size_t(kTile) * size_t(kTile) * size_t(spp));
-    std::vector<Ray> rays;
-    std::vector<RayHit> hits;
+    TileScratch scratch;
+    scratch.pending.reserve(size_t(kTile) * size_t(kTile) * size_t(samples.spp));
     for (int ty = range.rows().begin(); ty != range.rows().end(); ++ty)
       for (int tx = range.cols().begin(); tx != range.cols().end(); ++tx) {
         if (settings.cancel && settings.cancel->load(std::memory_order_relaxed)) return;
         if (interruptRequested()) return;
         Stopwatch phase;
-        pending.clear();
-        uint64_t primary = 0, reflected = 0;
-        int x1 = std::min((tx + 1) * kTile, size.x), y1 = std::min((ty + 1) * kTile, size.y);
-        if (!kReference) {
-          // The tile's primary rays, in the order the loop below takes them, traced at once.
-          rays.clear();
-          for (int y = ty * kTile; y < y1; ++y)
-            for (int x = tx * kTile; x < x1; ++x) {
-              for (int s = 0; s < spp; ++s) {
-                vec2 o = offset(x, y, s);
-                rays.push_back(view.primaryRay(float(x) + o.x, float(y) + o.y));
-              }
-              if (centre_sample < 0)
-                rays.push_back(view.primaryRay(float(x) + 0.5f, float(y) + 0.5f));
-            }
-          hits.resize(rays.size());
-          ray_scene_.intersect(rays.data(), hits.data(), rays.size());
-        }
-        size_t next = 0;  // the next of `rays`/`hits`
-        // Pass 1: primary rays; diffuse surfaces and the sky are shaded at once.
-        for (int y = ty * kTile; y < y1; ++y)
-          for (int x = tx * kTile; x < x1; ++x) {
-            int pixel = y * size.x + x;
-            vec3 sum(0.0f);
-            RayHit centre_hit;
-            for (int s = 0; s < spp; ++s) {
-              Ray ray;
-              RayHit hit;
-              if (kReference) {
-                vec2 o = offset(x, y, s);
-                ray = view.primaryRay(float(x) + o.x, float(y) + o.y);
-                hit = ray_scene_.intersect(ray);
-              } else {
-                ray = rays[next];
-                hit = hits[next++];
-              }
-              ++primary;
-              if (s == centre_sample) centre_hit = hit;
-              if (!hit.hit())
-                sum += environment_.sample(ray.direction);
-              else if (reflector_id_[size_t(hit.instance)] == 0)
-                sum += shadeHit<kReference>(ray, hit, 0, reflected);
-              else
-                pending.push_back({ray, hit, pixel});
-            }
-            // The ID and distance come from the pixel centre, as the rasteriser's do.
-            if (centre_sample < 0)
-              centre_hit =
-                  kReference
-                      ? ray_scene_.intersect(view.primaryRay(float(x) + 0.5f, float(y) + 0.5f))
-                      : hits[next++];
-            result.ids(x, y) =
-                centre_hit.hit() ? uint32_t(reflector_id_[size_t(centre_hit.instance)]) : 0u;
-            float distance = centre_hit.hit() ? centre_hit.t : sh::MISS_DISTANCE;
-            result.color(x, y) = vec4(sum / float(spp), distance);
-          }
+        scratch.pending.clear();
+        scratch.primary = scratch.reflected = 0;
+        if (!kReference) traceTilePrimaries(view, samples, tx, ty, scratch);
+        shadeTilePrimaries<kReference>(view, samples, tx, ty, scratch, result);
         direct_cpu.local() += phase.ms();
         phase.restart();
         // Pass 2: the reflections of the reflector samples.
-        for (const Pending& p : pending) {
-          vec3 c = shadeHit<kReference>(p.ray, p.hit, settings.order, reflected);
+        for (const TileScratch::Pending& p : scratch.pending) {
+          vec3 c = shadeHit<kReference>(p.ray, p.hit, settings.order, scratch.reflected);
           vec4& out = result.color.data()[p.pixel];
-          out = vec4(vec3(out) + c / float(spp), out.w);
+          out = vec4(vec3(out) + c / float(samples.spp), out.w);
         }
         reflect_cpu.local() += phase.ms();
-        primary_total += primary;
-        reflected_total += reflected;
+        primary_total += scratch.primary;
+        reflected_total += scratch.reflected;
         progress.advance();
       }
   });

@@ -90,6 +90,13 @@ class RayTracer {
                 uint64_t& reflected_rays) const;
   template <bool kReference>
   TracedRadiance traceRay(const Ray& ray, int bounces_left, uint64_t& reflected_rays) const;
+  struct PixelSamples;
+  struct TileScratch;
+  void traceTilePrimaries(const View& view, const PixelSamples& samples, int tx, int ty,
+                          TileScratch& scratch) const;
+  template <bool kReference>
+  void shadeTilePrimaries(const View& view, const PixelSamples& samples, int tx, int ty,
+                          TileScratch& scratch, TraceResult& result) const;
   template <bool kReference>
   void renderTiles(const View& view, const TraceSettings& settings, TraceResult& result) const;
   vec3 sampleTexture(int texture, vec2 uv) const;

@@ -38,9 +38,8 @@ quat rotationY(float degrees) {
 
 // A checkerboard floor of `size` units with one-unit cells, at y = 0.
 void addCheckerFloor(Scene& s, float size) {
-  int mesh = addMesh(s, procedural::quad(size, size, 1.0f));
-  int mat = addMaterial(s, Material::checker("checker", kCheckerLight, kCheckerDark, 1.0f));
-  addInstance(s, "floor", mesh, mat, {});
+  addObject(s, "floor", procedural::quad(size, size, 1.0f),
+            Material::checker("checker", kCheckerLight, kCheckerDark, 1.0f), {});
 }
 
 // Keyframes sampling `at` (a transform of u in [0, 1) over one period) 16 times a period,
@@ -60,15 +59,13 @@ Animation periodic(float period, At at) {
 
 Scene sphereOverChecker() {
   Scene s;
-  s.description = "one mirror sphere over a checkerboard floor with coloured boxes around it";
   addCheckerFloor(s, 16.0f);
   addBox(s, "red-box", {2.6f, 0.5f, 0.8f}, vec3(0.5f), {0.85f, 0.18f, 0.12f}, 20.0f);
   addBox(s, "green-box", {-2.4f, 0.35f, 1.2f}, vec3(0.35f), {0.2f, 0.7f, 0.25f}, -15.0f);
   addBox(s, "blue-box", {0.6f, 0.75f, -2.6f}, {0.4f, 0.75f, 0.4f}, {0.15f, 0.3f, 0.85f}, 35.0f);
   addBox(s, "yellow-box", {-1.6f, 0.3f, -1.9f}, vec3(0.3f), {0.9f, 0.8f, 0.15f}, 10.0f);
-  int sphere = addMesh(s, procedural::sphere(1.0f, 128, 64));
-  int mirror = addMaterial(s, Material::mirror("mirror"));
-  addInstance(s, "mirror-sphere", sphere, mirror, placeAt({0.0f, 1.25f, 0.0f}));
+  addObject(s, "mirror-sphere", procedural::sphere(1.0f, 128, 64), Material::mirror("mirror"),
+            placeAt({0.0f, 1.25f, 0.0f}));
   addMainCamera(s, {0.0f, 2.6f, 6.5f}, {0.0f, 1.0f, 0.0f}, 45.0f);
   return s;
 }
@@ -78,19 +75,17 @@ Scene spheres9(const SceneOptions& options) {
   if (count < 1 || count > 9)
     throwInput("spheres9: --reflectors {} is outside the allowed range 1..9", options.reflectors);
   Scene s;
-  s.description = "a 3x3 grid of mirror spheres among diffuse objects (--reflectors N keeps N)";
   addCheckerFloor(s, 24.0f);
   // Diffuse objects between and around the spheres.
   addBox(s, "red-box", {-1.1f, 0.3f, -1.1f}, vec3(0.3f), {0.85f, 0.18f, 0.12f}, 30.0f);
   addBox(s, "green-box", {1.1f, 0.3f, 1.1f}, vec3(0.3f), {0.2f, 0.7f, 0.25f}, -20.0f);
   addBox(s, "blue-box", {1.1f, 0.45f, -1.1f}, {0.25f, 0.45f, 0.25f}, {0.15f, 0.3f, 0.85f}, 10.0f);
   addBox(s, "yellow-box", {-1.1f, 0.25f, 1.1f}, vec3(0.25f), {0.9f, 0.8f, 0.15f}, 45.0f);
-  int column = addMesh(s, procedural::cylinder(0.25f, 1.6f));
-  int orange = addMaterial(s, Material::diffuse("orange", {0.95f, 0.5f, 0.1f}));
-  addInstance(s, "column", column, orange, placeAt({-3.6f, 0.0f, -0.4f}));
-  int teapot = addMesh(s, procedural::teapotLike());
-  int purple = addMaterial(s, Material::diffuse("purple", {0.55f, 0.25f, 0.7f}));
-  addInstance(s, "teapot", teapot, purple, placeAt({3.5f, 0.0f, 0.6f}, vec3(1.2f), rotationY(200)));
+  addObject(s, "column", procedural::cylinder(0.25f, 1.6f),
+            Material::diffuse("orange", {0.95f, 0.5f, 0.1f}), placeAt({-3.6f, 0.0f, -0.4f}));
+  addObject(s, "teapot", procedural::teapotLike(),
+            Material::diffuse("purple", {0.55f, 0.25f, 0.7f}),
+            placeAt({3.5f, 0.0f, 0.6f}, vec3(1.2f), rotationY(200)));
   int sphere = addMesh(s, procedural::sphere(0.7f, 96, 48));
   int mirror = addMaterial(s, Material::mirror("mirror"));
   // Front row first, as the reflectors are enabled one by one.
@@ -115,49 +110,36 @@ Scene spheres9(const SceneOptions& options) {
 // hole to see through) reflected in a mirror sphere, on a checkerboard.
 Scene teapotSphere() {
   Scene s;
-  s.description =
-      "a teapot and a standing torus reflected in a mirror sphere on a checkerboard (depth maps)";
   addCheckerFloor(s, 16.0f);
   int teapot = addMesh(s, procedural::teapotLike());
   int purple = addMaterial(s, Material::diffuse("purple", {0.55f, 0.25f, 0.7f}));
   addInstance(s, "teapot", teapot, purple,
               placeAt({-1.25f, 0.0f, 0.3f}, vec3(1.2f), rotationY(-30)));
-  int torus = addMesh(s, procedural::torus(0.45f, 0.16f, 64, 32));
-  int orange = addMaterial(s, Material::diffuse("orange", {0.95f, 0.5f, 0.1f}));
   Transform standing = placeAt({1.3f, 0.62f, 0.2f});
   // Standing on its rim, its hole facing the sphere.
   standing.rotation = glm::angleAxis(glm::radians(35.0f), vec3(0, 1, 0));
-  addInstance(s, "torus", torus, orange, standing);
-  int sphere = addMesh(s, procedural::sphere(1.0f, 128, 64));
-  int mirror = addMaterial(s, Material::mirror("mirror"));
-  addInstance(s, "mirror-sphere", sphere, mirror, placeAt({0.0f, 1.0f, -0.8f}));
+  addObject(s, "torus", procedural::torus(0.45f, 0.16f, 64, 32),
+            Material::diffuse("orange", {0.95f, 0.5f, 0.1f}), standing);
+  addObject(s, "mirror-sphere", procedural::sphere(1.0f, 128, 64), Material::mirror("mirror"),
+            placeAt({0.0f, 1.0f, -0.8f}));
   addMainCamera(s, {0.0f, 1.7f, 4.6f}, {0.0f, 0.8f, -0.3f}, 40.0f);
   return s;
 }
 
 Scene mirrorTorus() {
   Scene s;
-  s.description =
-      "a standing mirror torus beside a teapot on a checkerboard, seen into its hole: the inner "
-      "surface reflects itself (self-reflections)";
   addCheckerFloor(s, 16.0f);
-  int teapot = addMesh(s, procedural::teapotLike());
-  int purple = addMaterial(s, Material::diffuse("purple", {0.55f, 0.25f, 0.7f}));
-  addInstance(s, "teapot", teapot, purple,
-              placeAt({-1.6f, 0.0f, 0.9f}, vec3(1.2f), rotationY(-30)));
-  int torus = addMesh(s, procedural::torus(0.9f, 0.35f, 96, 48));
-  int mirror = addMaterial(s, Material::mirror("mirror"));
-  addInstance(s, "mirror-torus", torus, mirror,
-              placeAt({0.3f, 1.25f, -0.4f}, vec3(1.0f), rotationY(20)));
+  addObject(s, "teapot", procedural::teapotLike(),
+            Material::diffuse("purple", {0.55f, 0.25f, 0.7f}),
+            placeAt({-1.6f, 0.0f, 0.9f}, vec3(1.2f), rotationY(-30)));
+  addObject(s, "mirror-torus", procedural::torus(0.9f, 0.35f, 96, 48), Material::mirror("mirror"),
+            placeAt({0.3f, 1.25f, -0.4f}, vec3(1.0f), rotationY(20)));
   addMainCamera(s, {1.2f, 1.9f, 3.0f}, {0.3f, 1.2f, -0.4f}, 40.0f);
   return s;
 }
 
 Scene mirrorRoom() {
   Scene s;
-  s.description =
-      "a checkerboard room with one planar wall mirror, a teapot-like object on an "
-      "inverted pyramid and a box";
   int room = addMesh(s, procedural::box({4.0f, 2.0f, 4.0f}, true));
   int walls = addMaterial(s, Material::checker("walls", kCheckerLight, {0.25f, 0.35f, 0.6f}, 1.0f));
   addInstance(s, "room", room, walls, placeAt({0.0f, 2.0f, 0.0f}));
@@ -203,8 +185,6 @@ Scene mirrorRoom() {
 
 Scene twoMirrors() {
   Scene s;
-  s.description =
-      "two facing planar mirrors with objects between them (reflections of every order)";
   addCheckerFloor(s, 16.0f);
   int mirror_mesh = addMesh(s, procedural::quad(7.0f, 2.6f));
   int mirror = addMaterial(s, Material::mirror("mirror", vec3(0.05f), vec3(0.95f)));
@@ -220,12 +200,10 @@ Scene twoMirrors() {
     addBox(s, x < 0 ? "frame-left" : "frame-right", {x, 1.4f, 0.0f}, {0.04f, 1.42f, 3.62f},
            {0.12f, 0.08f, 0.05f});
   addBox(s, "red-box", {0.0f, 0.4f, 0.0f}, vec3(0.4f), {0.85f, 0.18f, 0.12f}, 20.0f);
-  int sphere = addMesh(s, procedural::sphere(0.35f, 48, 24));
-  int blue = addMaterial(s, Material::diffuse("blue", {0.15f, 0.3f, 0.85f}));
-  addInstance(s, "blue-sphere", sphere, blue, placeAt({0.9f, 0.35f, -0.8f}));
-  int column = addMesh(s, procedural::cylinder(0.2f, 1.4f));
-  int yellow = addMaterial(s, Material::diffuse("yellow", {0.9f, 0.8f, 0.15f}));
-  addInstance(s, "column", column, yellow, placeAt({-1.0f, 0.0f, 0.7f}));
+  addObject(s, "blue-sphere", procedural::sphere(0.35f, 48, 24),
+            Material::diffuse("blue", {0.15f, 0.3f, 0.85f}), placeAt({0.9f, 0.35f, -0.8f}));
+  addObject(s, "column", procedural::cylinder(0.2f, 1.4f),
+            Material::diffuse("yellow", {0.9f, 0.8f, 0.15f}), placeAt({-1.0f, 0.0f, 0.7f}));
   addMainCamera(s, {2.3f, 1.8f, 3.0f}, {-3.0f, 1.1f, -1.2f}, 55.0f);
   // Six seconds along the right mirror, between the mirrors (in front of both), looking across at
   // the left one.
@@ -275,9 +253,6 @@ quat alongDirection(vec3 direction) {
 // objects around it inverted and doubled, and a straw that intersects the reflector (Figure 2).
 Scene glass() {
   Scene s;
-  s.description =
-      "a mirror goblet on a checkerboard with coloured objects around it and a straw through its "
-      "rim: the concave bowl shows them inverted and doubled (the hybrid paper's glass)";
   addCheckerFloor(s, 16.0f);
   int goblet = addMesh(s, procedural::lathe(gobletProfile(), 80));
   s.meshes[size_t(goblet)].name = "goblet";
@@ -290,15 +265,13 @@ Scene glass() {
   addInstance(s, "straw", straw, red,
               placeAt(straw_base, vec3(1.0f), alongDirection(rim_point - straw_base)));
   addBox(s, "orange-box", {0.75f, 0.7f, -0.1f}, {0.16f, 0.7f, 0.16f}, {0.95f, 0.5f, 0.1f}, 25.0f);
-  int column = addMesh(s, procedural::cylinder(0.12f, 1.6f, 48));
-  int purple = addMaterial(s, Material::diffuse("purple", {0.55f, 0.25f, 0.7f}));
-  addInstance(s, "purple-column", column, purple, placeAt({-0.85f, 0.0f, 0.2f}));
+  addObject(s, "purple-column", procedural::cylinder(0.12f, 1.6f, 48),
+            Material::diffuse("purple", {0.55f, 0.25f, 0.7f}), placeAt({-0.85f, 0.0f, 0.2f}));
   addBox(s, "blue-box", {0.5f, 0.35f, 0.8f}, {0.13f, 0.35f, 0.13f}, {0.15f, 0.3f, 0.85f}, 10.0f);
   // A hoop standing in front of the goblet, the camera looking through it: the bowl's inside
   // shows it upside down.
-  int hoop = addMesh(s, procedural::torus(1.0f, 0.08f, 96, 24));
-  int yellow = addMaterial(s, Material::diffuse("yellow", {0.9f, 0.8f, 0.15f}));
-  addInstance(s, "yellow-hoop", hoop, yellow, placeAt({0.0f, 1.08f, 0.75f}));
+  addObject(s, "yellow-hoop", procedural::torus(1.0f, 0.08f, 96, 24),
+            Material::diffuse("yellow", {0.9f, 0.8f, 0.15f}), placeAt({0.0f, 1.08f, 0.75f}));
   addMainCamera(s, {0.15f, 2.0f, 1.9f}, {0.0f, 0.85f, 0.0f}, 38.0f);
   return s;
 }
@@ -308,20 +281,14 @@ Scene glass() {
 // converge and then diverge, where one C3RC projects a point twice (the hybrid paper's Figure 3).
 Scene concaveDish() {
   Scene s;
-  s.description =
-      "a coarse concave mirror dish with a ball near its focus: large convergent-then-divergent "
-      "C3RCs, the case for a second projection inside one C3RC (hybrid paper, Figure 3)";
   std::vector<vec2> profile;  // rim to axis, so that the normals face into the dish
   for (int i = 5; i >= 0; --i) {
     const float t = glm::radians(40.0f) * float(i) / 5.0f;
     profile.push_back({std::sin(t), 1.0f - std::cos(t)});
   }
-  int dish = addMesh(s, procedural::lathe(profile, 10));
-  int mirror = addMaterial(s, Material::mirror("mirror"));
-  addInstance(s, "dish", dish, mirror, {});
-  int ball = addMesh(s, procedural::sphere(0.08f, 64, 32));
-  int red = addMaterial(s, Material::diffuse("red", {0.9f, 0.2f, 0.2f}));
-  addInstance(s, "ball", ball, red, placeAt({0.03f, 0.66f, -0.3f}));
+  addObject(s, "dish", procedural::lathe(profile, 10), Material::mirror("mirror"), {});
+  addObject(s, "ball", procedural::sphere(0.08f, 64, 32),
+            Material::diffuse("red", {0.9f, 0.2f, 0.2f}), placeAt({0.03f, 0.66f, -0.3f}));
   addMainCamera(s, {0.0f, 2.2f, 0.9f}, {0.0f, 0.1f, 0.0f}, 35.0f);
   return s;
 }
@@ -330,13 +297,10 @@ Scene concaveDish() {
 // a point near one end (a deforming reflector), with coloured objects around its rim.
 Scene ripplePool() {
   Scene s;
-  s.description =
-      "a rippling mirror pool on a checkerboard with objects around it: a deforming reflector "
-      "(waves from a point, 2.5 s period)";
   addCheckerFloor(s, 16.0f);
-  int pool = addMesh(s, procedural::quad(4.0f, 3.0f, 1.0f, 96, 72));
-  int mirror = addMaterial(s, Material::mirror("water", vec3(0.04f, 0.06f, 0.08f)));
-  const int pool_instance = addInstance(s, "pool", pool, mirror, placeAt({0.0f, 0.06f, 0.0f}));
+  const int pool_instance =
+      addObject(s, "pool", procedural::quad(4.0f, 3.0f, 1.0f, 96, 72),
+                Material::mirror("water", vec3(0.04f, 0.06f, 0.08f)), placeAt({0.0f, 0.06f, 0.0f}));
   Deformation& ripple = s.instances[size_t(pool_instance)].deformation;
   ripple.kind = Deformation::Kind::kRipple;
   ripple.amplitude = 0.025f;
@@ -346,15 +310,13 @@ Scene ripplePool() {
   ripple.center = vec3(-0.9f, 0.0f, -0.4f);
   addBox(s, "red-box", {-1.4f, 0.35f, -2.0f}, vec3(0.35f), {0.85f, 0.18f, 0.12f}, 20.0f);
   addBox(s, "blue-box", {1.3f, 0.5f, -2.1f}, {0.3f, 0.5f, 0.3f}, {0.15f, 0.3f, 0.85f}, -15.0f);
-  int column = addMesh(s, procedural::cylinder(0.18f, 1.5f));
-  int yellow = addMaterial(s, Material::diffuse("yellow", {0.9f, 0.8f, 0.15f}));
-  addInstance(s, "column", column, yellow, placeAt({2.4f, 0.0f, -0.6f}));
-  int teapot = addMesh(s, procedural::teapotLike());
-  int purple = addMaterial(s, Material::diffuse("purple", {0.55f, 0.25f, 0.7f}));
-  addInstance(s, "teapot", teapot, purple, placeAt({-2.5f, 0.0f, 0.3f}, vec3(1.0f), rotationY(60)));
-  int ball = addMesh(s, procedural::sphere(0.3f, 48, 24));
-  int green = addMaterial(s, Material::diffuse("green", {0.2f, 0.7f, 0.25f}));
-  addInstance(s, "green-ball", ball, green, placeAt({0.3f, 0.3f, -1.9f}));
+  addObject(s, "column", procedural::cylinder(0.18f, 1.5f),
+            Material::diffuse("yellow", {0.9f, 0.8f, 0.15f}), placeAt({2.4f, 0.0f, -0.6f}));
+  addObject(s, "teapot", procedural::teapotLike(),
+            Material::diffuse("purple", {0.55f, 0.25f, 0.7f}),
+            placeAt({-2.5f, 0.0f, 0.3f}, vec3(1.0f), rotationY(60)));
+  addObject(s, "green-ball", procedural::sphere(0.3f, 48, 24),
+            Material::diffuse("green", {0.2f, 0.7f, 0.25f}), placeAt({0.3f, 0.3f, -1.9f}));
   addMainCamera(s, {0.4f, 2.2f, 4.2f}, {0.0f, 0.2f, -0.6f}, 45.0f);
   return s;
 }
@@ -382,10 +344,16 @@ int addInstance(Scene& scene, std::string name, int mesh, int material,
   return int(scene.instances.size()) - 1;
 }
 
+int addObject(Scene& scene, std::string name, Mesh mesh, Material material,
+              const Transform& transform) {
+  const int mesh_index = addMesh(scene, std::move(mesh));
+  const int material_index = addMaterial(scene, std::move(material));
+  return addInstance(scene, std::move(name), mesh_index, material_index, transform);
+}
+
 void addBox(Scene& s, const char* name, vec3 center, vec3 half, vec3 color, float yaw) {
-  int mesh = addMesh(s, procedural::box(half));
-  int mat = addMaterial(s, Material::diffuse(name, color));
-  addInstance(s, name, mesh, mat, placeAt(center, vec3(1.0f), rotationY(yaw)));
+  addObject(s, name, procedural::box(half), Material::diffuse(name, color),
+            placeAt(center, vec3(1.0f), rotationY(yaw)));
 }
 
 Transform placeAt(vec3 translation, vec3 scale, quat rotation) {
@@ -400,20 +368,43 @@ namespace {
 
 struct BuiltinMaker {
   const char* name;
+  const char* description;  // what `mirage scenes` lists, without building the scene
   Scene (*make)(const SceneOptions&);
 };
 
 // The built-in scenes, in the order `mirage scenes` lists them.
 constexpr BuiltinMaker kBuiltins[] = {
-    {"sphere-over-checker", [](const SceneOptions&) { return sphereOverChecker(); }},
-    {"spheres9", [](const SceneOptions& o) { return spheres9(o); }},
-    {"mirror-room", [](const SceneOptions&) { return mirrorRoom(); }},
-    {"two-mirrors", [](const SceneOptions&) { return twoMirrors(); }},
-    {"teapot-sphere", [](const SceneOptions&) { return teapotSphere(); }},
-    {"mirror-torus", [](const SceneOptions&) { return mirrorTorus(); }},
-    {"glass", [](const SceneOptions&) { return glass(); }},
-    {"concave-dish", [](const SceneOptions&) { return concaveDish(); }},
-    {"ripple-pool", [](const SceneOptions&) { return ripplePool(); }},
+    {"sphere-over-checker",
+     "one mirror sphere over a checkerboard floor with coloured boxes around it",
+     [](const SceneOptions&) { return sphereOverChecker(); }},
+    {"spheres9", "a 3x3 grid of mirror spheres among diffuse objects (--reflectors N keeps N)",
+     [](const SceneOptions& o) { return spheres9(o); }},
+    {"mirror-room",
+     "a checkerboard room with one planar wall mirror, a teapot-like object on an "
+     "inverted pyramid and a box",
+     [](const SceneOptions&) { return mirrorRoom(); }},
+    {"two-mirrors",
+     "two facing planar mirrors with objects between them (reflections of every order)",
+     [](const SceneOptions&) { return twoMirrors(); }},
+    {"teapot-sphere",
+     "a teapot and a standing torus reflected in a mirror sphere on a checkerboard (depth maps)",
+     [](const SceneOptions&) { return teapotSphere(); }},
+    {"mirror-torus",
+     "a standing mirror torus beside a teapot on a checkerboard, seen into its hole: the inner "
+     "surface reflects itself (self-reflections)",
+     [](const SceneOptions&) { return mirrorTorus(); }},
+    {"glass",
+     "a mirror goblet on a checkerboard with coloured objects around it and a straw through its "
+     "rim: the concave bowl shows them inverted and doubled (the hybrid paper's glass)",
+     [](const SceneOptions&) { return glass(); }},
+    {"concave-dish",
+     "a coarse concave mirror dish with a ball near its focus: large convergent-then-divergent "
+     "C3RCs, the case for a second projection inside one C3RC (hybrid paper, Figure 3)",
+     [](const SceneOptions&) { return concaveDish(); }},
+    {"ripple-pool",
+     "a rippling mirror pool on a checkerboard with objects around it: a deforming reflector "
+     "(waves from a point, 2.5 s period)",
+     [](const SceneOptions&) { return ripplePool(); }},
 };
 
 const BuiltinMaker* findBuiltin(const std::string& name) {
@@ -427,8 +418,7 @@ const BuiltinMaker* findBuiltin(const std::string& name) {
 const std::vector<BuiltinSceneInfo>& builtinScenes() {
   static const std::vector<BuiltinSceneInfo> scenes = [] {
     std::vector<BuiltinSceneInfo> v;
-    for (const BuiltinMaker& b : kBuiltins)
-      v.push_back({b.name, makeBuiltinScene(b.name).description});
+    for (const BuiltinMaker& b : kBuiltins) v.push_back({b.name, b.description});
     return v;
   }();
   return scenes;
@@ -445,6 +435,7 @@ Scene makeBuiltinScene(const std::string& name, const SceneOptions& options) {
   if (options.reflectors >= 0 && name != "spheres9")
     throwInput("--reflectors applies to spheres9 only, not to '{}'", name);
   s.name = name;
+  s.description = maker->description;
   s.source = "builtin:" + name;
   s.validate();
   return s;

@@ -30,6 +30,9 @@ inline const vec3 kCheckerDark{0.10f, 0.10f, 0.12f};
 int addMesh(Scene& scene, Mesh mesh);
 int addMaterial(Scene& scene, Material material);
 int addInstance(Scene& scene, std::string name, int mesh, int material, const Transform& transform);
+// One mesh with its own material, placed once: addMesh, addMaterial and addInstance in turn.
+int addObject(Scene& scene, std::string name, Mesh mesh, Material material,
+              const Transform& transform);
 // A diffuse box of half extents `half` centred at `center`, turned by `yaw` degrees about +Y.
 void addBox(Scene& scene, const char* name, vec3 center, vec3 half, vec3 color, float yaw = 0.0f);
 Transform placeAt(vec3 translation, vec3 scale = vec3(1.0f), quat rotation = quat(1, 0, 0, 0));

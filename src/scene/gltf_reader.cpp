@@ -214,85 +214,15 @@ class GltfConverter {
       spdlog::warn("{}: {} has mode {} (points or lines); skipped", path_, what, prim.mode);
       return std::nullopt;
     }
-    auto attribute = [&](const char* n) {
-      auto it = prim.attributes.find(n);
-      return it == prim.attributes.end() ? -1 : it->second;
-    };
-    int position = attribute("POSITION");
-    if (position < 0) throwInput("{}: {} has no POSITION attribute", path_, what);
-    uint64_t vertex_budget = limits_.max_vertices - std::min(limits_.max_vertices, vertices_);
-    auto use = [&](const char* a) { return gltf::Use{path_, what + " " + a}; };
-
     Mesh m;
     m.name = name;
     m.source = path_;
-    std::vector<float> p =
-        gltf::readFloats(gltf_, position, 3, false, vertex_budget, use("POSITION"));
-    size_t n = p.size() / 3;
-    m.positions.resize(n);
-    for (size_t i = 0; i < n; ++i) {
-      m.positions[i] = vec3(p[3 * i], p[3 * i + 1], p[3 * i + 2]);
-      if (!isFinite(m.positions[i])) throwInput("{}: {} POSITION {} is not finite", path_, what, i);
-    }
-    auto sameCount = [&](const std::vector<float>& v, int comps, const char* a) {
-      if (v.size() != n * size_t(comps))
-        throwInput("{}: {} {} has {} elements; POSITION has {}", path_, what, a,
-                   v.size() / size_t(comps), n);
-    };
-    if (int a = attribute("NORMAL"); a >= 0) {
-      std::vector<float> v = gltf::readFloats(gltf_, a, 3, false, vertex_budget, use("NORMAL"));
-      sameCount(v, 3, "NORMAL");
-      m.normals.resize(n);
-      for (size_t i = 0; i < n; ++i) m.normals[i] = vec3(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
-    }
-    if (int a = attribute("TEXCOORD_0"); a >= 0) {
-      std::vector<float> v = gltf::readFloats(gltf_, a, 2, true, vertex_budget, use("TEXCOORD_0"));
-      sameCount(v, 2, "TEXCOORD_0");
-      m.uvs.resize(n);
-      for (size_t i = 0; i < n; ++i) m.uvs[i] = vec2(v[2 * i], 1.0f - v[2 * i + 1]);
-    }
-    if (int a = attribute("TANGENT"); a >= 0 && !m.uvs.empty()) {
-      std::vector<float> v = gltf::readFloats(gltf_, a, 4, false, vertex_budget, use("TANGENT"));
-      sameCount(v, 4, "TANGENT");
-      m.tangents.resize(n);
-      for (size_t i = 0; i < n; ++i) {
-        vec3 t(v[4 * i], v[4 * i + 1], v[4 * i + 2]);
-        float len = glm::length(t);
-        m.tangents[i] = vec4(len > 0.0f && std::isfinite(len) ? t / len : vec3(1, 0, 0),
-                             v[4 * i + 3] < 0.0f ? -1.0f : 1.0f);
-      }
-    }
-
-    std::vector<uint32_t> idx;
-    uint64_t index_budget =
-        3 * (limits_.max_triangles - std::min(limits_.max_triangles, triangles_)) + 2;
-    if (prim.indices >= 0) {
-      idx = gltf::readIndices(gltf_, prim.indices, index_budget, use("indices"));
-      for (size_t i = 0; i < idx.size(); ++i)
-        if (idx[i] >= n)
-          throwInput("{}: {} index {} is {}, outside 0..{} (POSITION has {} elements)", path_, what,
-                     i, idx[i], int64_t(n) - 1, n);
-    } else {
-      idx.resize(n);
-      std::iota(idx.begin(), idx.end(), 0u);
-    }
-    if (prim.mode == TINYGLTF_MODE_TRIANGLES) {
-      if (idx.size() % 3 != 0)
-        throwInput("{}: {} has {} indices, not a multiple of 3 (mode TRIANGLES)", path_, what,
-                   idx.size());
-      for (size_t i = 0; i + 2 < idx.size(); i += 3)
-        m.triangles.push_back({idx[i], idx[i + 1], idx[i + 2]});
-    } else {
-      bool strip = prim.mode == TINYGLTF_MODE_TRIANGLE_STRIP;
-      for (size_t i = 2; i < idx.size(); ++i) {
-        if (!strip)
-          m.triangles.push_back({idx[0], idx[i - 1], idx[i]});
-        else if (i % 2 == 0)
-          m.triangles.push_back({idx[i - 2], idx[i - 1], idx[i]});
-        else
-          m.triangles.push_back({idx[i - 1], idx[i - 2], idx[i]});
-      }
-    }
+    readVertices(prim, what, m);
+    const std::vector<uint32_t> idx = readIndices(prim, what, m.positions.size());
+    if (prim.mode == TINYGLTF_MODE_TRIANGLES && idx.size() % 3 != 0)
+      throwInput("{}: {} has {} indices, not a multiple of 3 (mode TRIANGLES)", path_, what,
+                 idx.size());
+    appendTriangles(prim.mode, idx, m.triangles);
     if (m.triangles.empty()) {
       spdlog::warn("{}: {} has no triangles; skipped", path_, what);
       return std::nullopt;
@@ -306,6 +236,96 @@ class GltfConverter {
     if (normal_map && m.tangents.empty() && !m.uvs.empty()) m.computeTangents();
     budget(m);
     return m;
+  }
+
+  static int attributeOf(const tinygltf::Primitive& prim, const char* name) {
+    auto it = prim.attributes.find(name);
+    return it == prim.attributes.end() ? -1 : it->second;
+  }
+
+  // The primitive's positions, and its normals, texture coordinates and tangents where given,
+  // each as many as the positions.
+  void readVertices(const tinygltf::Primitive& prim, const std::string& what, Mesh& m) {
+    int position = attributeOf(prim, "POSITION");
+    if (position < 0) throwInput("{}: {} has no POSITION attribute", path_, what);
+    const uint64_t vertex_budget = limits_.max_vertices - std::min(limits_.max_vertices, vertices_);
+    auto read = [&](int accessor, int comps, bool normalized, const char* a) {
+      return gltf::readFloats(gltf_, accessor, comps, normalized, vertex_budget,
+                              gltf::Use{path_, what + " " + a});
+    };
+    std::vector<float> p = read(position, 3, false, "POSITION");
+    size_t n = p.size() / 3;
+    m.positions.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+      m.positions[i] = vec3(p[3 * i], p[3 * i + 1], p[3 * i + 2]);
+      if (!isFinite(m.positions[i])) throwInput("{}: {} POSITION {} is not finite", path_, what, i);
+    }
+    auto sameCount = [&](const std::vector<float>& v, int comps, const char* a) {
+      if (v.size() != n * size_t(comps))
+        throwInput("{}: {} {} has {} elements; POSITION has {}", path_, what, a,
+                   v.size() / size_t(comps), n);
+    };
+    if (int a = attributeOf(prim, "NORMAL"); a >= 0) {
+      std::vector<float> v = read(a, 3, false, "NORMAL");
+      sameCount(v, 3, "NORMAL");
+      m.normals.resize(n);
+      for (size_t i = 0; i < n; ++i) m.normals[i] = vec3(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
+    }
+    if (int a = attributeOf(prim, "TEXCOORD_0"); a >= 0) {
+      std::vector<float> v = read(a, 2, true, "TEXCOORD_0");
+      sameCount(v, 2, "TEXCOORD_0");
+      m.uvs.resize(n);
+      for (size_t i = 0; i < n; ++i) m.uvs[i] = vec2(v[2 * i], 1.0f - v[2 * i + 1]);
+    }
+    if (int a = attributeOf(prim, "TANGENT"); a >= 0 && !m.uvs.empty()) {
+      std::vector<float> v = read(a, 4, false, "TANGENT");
+      sameCount(v, 4, "TANGENT");
+      m.tangents.resize(n);
+      for (size_t i = 0; i < n; ++i) {
+        vec3 t(v[4 * i], v[4 * i + 1], v[4 * i + 2]);
+        float len = glm::length(t);
+        m.tangents[i] = vec4(len > 0.0f && std::isfinite(len) ? t / len : vec3(1, 0, 0),
+                             v[4 * i + 3] < 0.0f ? -1.0f : 1.0f);
+      }
+    }
+  }
+
+  // The primitive's indices, each checked against the n vertices, or 0..n-1 when it has none.
+  std::vector<uint32_t> readIndices(const tinygltf::Primitive& prim, const std::string& what,
+                                    size_t n) {
+    std::vector<uint32_t> idx;
+    if (prim.indices < 0) {
+      idx.resize(n);
+      std::iota(idx.begin(), idx.end(), 0u);
+      return idx;
+    }
+    const uint64_t index_budget =
+        3 * (limits_.max_triangles - std::min(limits_.max_triangles, triangles_)) + 2;
+    idx = gltf::readIndices(gltf_, prim.indices, index_budget, gltf::Use{path_, what + " indices"});
+    for (size_t i = 0; i < idx.size(); ++i)
+      if (idx[i] >= n)
+        throwInput("{}: {} index {} is {}, outside 0..{} (POSITION has {} elements)", path_, what,
+                   i, idx[i], int64_t(n) - 1, n);
+    return idx;
+  }
+
+  // The triangles of a TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN index list.
+  static void appendTriangles(int mode, const std::vector<uint32_t>& idx,
+                              std::vector<uvec3>& triangles) {
+    if (mode == TINYGLTF_MODE_TRIANGLES) {
+      for (size_t i = 0; i + 2 < idx.size(); i += 3)
+        triangles.push_back({idx[i], idx[i + 1], idx[i + 2]});
+      return;
+    }
+    bool strip = mode == TINYGLTF_MODE_TRIANGLE_STRIP;
+    for (size_t i = 2; i < idx.size(); ++i) {
+      if (!strip)
+        triangles.push_back({idx[0], idx[i - 1], idx[i]});
+      else if (i % 2 == 0)
+        triangles.push_back({idx[i - 2], idx[i - 1], idx[i]});
+      else
+        triangles.push_back({idx[i - 1], idx[i - 2], idx[i]});
+    }
   }
 
   Material material(int index) {

@@ -173,6 +173,130 @@ class ObjMaterials {
   loader::TextureList textures_;
 };
 
+// What tinyobjloader reads of a file, and the .mtl file each material came from.
+struct ObjFile {
+  tinyobj::attrib_t attrib;
+  std::vector<tinyobj::shape_t> shapes;
+  std::vector<tinyobj::material_t> materials;
+  std::vector<std::string> mtl_of;
+};
+
+ObjFile parseObj(const std::string& path, std::string text) {
+  ObjFile obj;
+  MtlReader mtl_reader(loader::folderOf(path), obj.mtl_of);
+  std::string warn, err;
+  bool ok;
+  {
+    std::istringstream in(std::move(text));
+    ok = tinyobj::LoadObj(&obj.attrib, &obj.shapes, &obj.materials, &warn, &err, &in, &mtl_reader,
+                          /*triangulate=*/false, /*default_vcols_fallback=*/false);
+  }
+  if (!ok || !err.empty()) {
+    while (!err.empty() && err.back() == '\n') err.pop_back();
+    throwInput("{}: {}", path, err.empty() ? "not a readable OBJ file" : err);
+  }
+  // Out-of-bounds indices are reported by addCorner as errors, with the face.
+  std::istringstream warnings(warn);
+  for (std::string line; std::getline(warnings, line);)
+    if (!line.empty() && line.find("out of bounds") == std::string::npos)
+      spdlog::warn("{}: {}", path, line);
+  return obj;
+}
+
+// A shape's faces split into one group per material, corners de-duplicated within a group.
+class ShapeSplitter {
+ public:
+  ShapeSplitter(const std::string& path, const ObjFile& obj, const LoadLimits& limits)
+      : path_(path),
+        obj_(obj),
+        limits_(limits),
+        nv_(int(obj.attrib.vertices.size() / 3)),
+        nn_(int(obj.attrib.normals.size() / 3)),
+        nt_(int(obj.attrib.texcoords.size() / 2)) {}
+
+  std::vector<Group> split(size_t s) {
+    const tinyobj::mesh_t& sm = obj_.shapes[s].mesh;
+    std::vector<Group> groups;
+    std::unordered_map<int, size_t> group_of;
+    size_t first = 0;
+    for (size_t f = 0; f < sm.num_face_vertices.size(); first += sm.num_face_vertices[f], ++f) {
+      size_t n = sm.num_face_vertices[f];
+      if (first + n > sm.indices.size())
+        throwInput("{}: shape {} face {} has corners past the index list", path_, s, f);
+      int mat = f < sm.material_ids.size() ? sm.material_ids[f] : -1;
+      if (mat < -1 || mat >= int(obj_.materials.size())) mat = -1;
+      auto [it, added] = group_of.try_emplace(mat, groups.size());
+      if (added) groups.emplace_back().material = mat;
+      Group& g = groups[it->second];
+      uint32_t corner[256];
+      for (size_t k = 0; k < n; ++k) corner[k] = addCorner(g, sm.indices[first + k], s, f);
+      for (size_t k = 2; k < n; ++k)
+        g.mesh.triangles.push_back({corner[0], corner[k - 1], corner[k]});
+      total_triangles_ += n >= 3 ? n - 2 : 0;
+      loader::checkLimits(path_, "the file", 0, total_triangles_, limits_);
+    }
+    return groups;
+  }
+
+ private:
+  // The group's vertex of the corner's v/vn/vt triple, added when first seen.
+  uint32_t addCorner(Group& g, const tinyobj::index_t& c, size_t s, size_t f) {
+    if (c.vertex_index < 0 || c.vertex_index >= nv_ || c.normal_index >= nn_ ||
+        c.texcoord_index >= nt_)
+      throwInput(
+          "{}: shape '{}' face {} refers to v/vt/vn {}/{}/{}, but the file has {} v, {} "
+          "vt and {} vn (OBJ indices count from 1)",
+          path_, obj_.shapes[s].name, f, c.vertex_index + 1, c.texcoord_index + 1,
+          c.normal_index + 1, nv_, nt_, nn_);
+    auto [ci, fresh] = g.index.try_emplace({c.vertex_index, c.normal_index, c.texcoord_index},
+                                           uint32_t(g.mesh.positions.size()));
+    if (!fresh) return ci->second;
+    const tinyobj::attrib_t& a = obj_.attrib;
+    const float* p = &a.vertices[3 * size_t(c.vertex_index)];
+    g.mesh.positions.push_back({p[0], p[1], p[2]});
+    if (!isFinite(g.mesh.positions.back()))
+      throwInput("{}: vertex {} has a non-finite position", path_, c.vertex_index + 1);
+    const float* nrm = c.normal_index >= 0 ? &a.normals[3 * size_t(c.normal_index)] : nullptr;
+    g.mesh.normals.push_back(nrm ? vec3(nrm[0], nrm[1], nrm[2]) : vec3(0.0f));
+    const float* uv = c.texcoord_index >= 0 ? &a.texcoords[2 * size_t(c.texcoord_index)] : nullptr;
+    g.mesh.uvs.push_back(uv ? vec2(uv[0], uv[1]) : vec2(0.0f));
+    g.all_normals = g.all_normals && nrm;
+    g.any_uv = g.any_uv || uv;
+    return ci->second;
+  }
+
+  const std::string& path_;
+  const ObjFile& obj_;
+  const LoadLimits& limits_;
+  const int nv_, nn_, nt_;
+  uint64_t total_triangles_ = 0;
+};
+
+// A shape's groups as the model's meshes: named, with normals (and tangents where mapped).
+void addShapeMeshes(const std::string& path, const ObjFile& obj, size_t s,
+                    std::vector<Group>& groups, LoadedModel& model) {
+  for (Group& g : groups) {
+    if (g.mesh.triangles.empty()) continue;  // lines or points only
+    Mesh& m = g.mesh;
+    const std::string& name = obj.shapes[s].name;
+    std::string shape = name.empty() ? fmt::format("shape{}", s) : name;
+    m.name = groups.size() > 1 && g.material >= 0
+                 ? shape + "/" + obj.materials[size_t(g.material)].name
+                 : shape;
+    m.source = path;
+    if (!g.any_uv) m.uvs.clear();
+    if (!g.all_normals)
+      m.computeNormals();
+    else
+      loader::repairNormals(m);
+    if (g.material >= 0 && model.materials[size_t(g.material)].normal_map >= 0 && g.any_uv)
+      m.computeTangents();
+    model.meshes.push_back(std::move(m));
+    model.mesh_material.push_back(g.material);
+    model.mesh_transform.push_back(mat4(1.0f));
+  }
+}
+
 }  // namespace
 
 LoadedModel loadObj(const std::string& path, const LoadLimits& limits) {
@@ -181,103 +305,15 @@ LoadedModel loadObj(const std::string& path, const LoadLimits& limits) {
 
 LoadedModel readObj(const std::string& path, std::string text, const LoadLimits& limits) {
   preScan(path, text, limits);
-
-  tinyobj::attrib_t attrib;
-  std::vector<tinyobj::shape_t> shapes;
-  std::vector<tinyobj::material_t> materials;
-  std::vector<std::string> mtl_of;
-  MtlReader mtl_reader(loader::folderOf(path), mtl_of);
-  std::string warn, err;
-  bool ok;
-  {
-    std::istringstream in(std::move(text));
-    ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, &mtl_reader,
-                          /*triangulate=*/false, /*default_vcols_fallback=*/false);
-  }
-  if (!ok || !err.empty()) {
-    while (!err.empty() && err.back() == '\n') err.pop_back();
-    throwInput("{}: {}", path, err.empty() ? "not a readable OBJ file" : err);
-  }
-  // Out-of-bounds indices are reported below as errors, with the face.
-  std::istringstream warnings(warn);
-  for (std::string line; std::getline(warnings, line);)
-    if (!line.empty() && line.find("out of bounds") == std::string::npos)
-      spdlog::warn("{}: {}", path, line);
-
-  const int nv = int(attrib.vertices.size() / 3), nn = int(attrib.normals.size() / 3),
-            nt = int(attrib.texcoords.size() / 2);
+  const ObjFile obj = parseObj(path, std::move(text));
   LoadedModel model;
-  ObjMaterials converter(path, mtl_of, model);
-  for (size_t i = 0; i < materials.size(); ++i)
-    model.materials.push_back(converter.convert(i, materials[i]));
-
-  uint64_t total_triangles = 0;
-  for (size_t s = 0; s < shapes.size(); ++s) {
-    const tinyobj::mesh_t& sm = shapes[s].mesh;
-    std::vector<Group> groups;
-    std::unordered_map<int, size_t> group_of;
-    size_t first = 0;
-    for (size_t f = 0; f < sm.num_face_vertices.size(); first += sm.num_face_vertices[f], ++f) {
-      size_t n = sm.num_face_vertices[f];
-      if (first + n > sm.indices.size())
-        throwInput("{}: shape {} face {} has corners past the index list", path, s, f);
-      int mat = f < sm.material_ids.size() ? sm.material_ids[f] : -1;
-      if (mat < -1 || mat >= int(materials.size())) mat = -1;
-      auto [it, added] = group_of.try_emplace(mat, groups.size());
-      if (added) groups.emplace_back().material = mat;
-      Group& g = groups[it->second];
-      uint32_t corner[256];
-      for (size_t k = 0; k < n; ++k) {
-        const tinyobj::index_t& c = sm.indices[first + k];
-        if (c.vertex_index < 0 || c.vertex_index >= nv || c.normal_index >= nn ||
-            c.texcoord_index >= nt)
-          throwInput(
-              "{}: shape '{}' face {} refers to v/vt/vn {}/{}/{}, but the file has {} v, {} "
-              "vt and {} vn (OBJ indices count from 1)",
-              path, shapes[s].name, f, c.vertex_index + 1, c.texcoord_index + 1, c.normal_index + 1,
-              nv, nt, nn);
-        auto [ci, fresh] = g.index.try_emplace({c.vertex_index, c.normal_index, c.texcoord_index},
-                                               uint32_t(g.mesh.positions.size()));
-        if (fresh) {
-          const float* p = &attrib.vertices[3 * size_t(c.vertex_index)];
-          g.mesh.positions.push_back({p[0], p[1], p[2]});
-          if (!isFinite(g.mesh.positions.back()))
-            throwInput("{}: vertex {} has a non-finite position", path, c.vertex_index + 1);
-          const float* nrm =
-              c.normal_index >= 0 ? &attrib.normals[3 * size_t(c.normal_index)] : nullptr;
-          g.mesh.normals.push_back(nrm ? vec3(nrm[0], nrm[1], nrm[2]) : vec3(0.0f));
-          const float* uv =
-              c.texcoord_index >= 0 ? &attrib.texcoords[2 * size_t(c.texcoord_index)] : nullptr;
-          g.mesh.uvs.push_back(uv ? vec2(uv[0], uv[1]) : vec2(0.0f));
-          g.all_normals = g.all_normals && nrm;
-          g.any_uv = g.any_uv || uv;
-        }
-        corner[k] = ci->second;
-      }
-      for (size_t k = 2; k < n; ++k)
-        g.mesh.triangles.push_back({corner[0], corner[k - 1], corner[k]});
-      total_triangles += n >= 3 ? n - 2 : 0;
-      loader::checkLimits(path, "the file", 0, total_triangles, limits);
-    }
-    for (Group& g : groups) {
-      if (g.mesh.triangles.empty()) continue;  // lines or points only
-      Mesh& m = g.mesh;
-      std::string shape = shapes[s].name.empty() ? fmt::format("shape{}", s) : shapes[s].name;
-      m.name = groups.size() > 1 && g.material >= 0
-                   ? shape + "/" + materials[size_t(g.material)].name
-                   : shape;
-      m.source = path;
-      if (!g.any_uv) m.uvs.clear();
-      if (!g.all_normals)
-        m.computeNormals();
-      else
-        loader::repairNormals(m);
-      if (g.material >= 0 && model.materials[size_t(g.material)].normal_map >= 0 && g.any_uv)
-        m.computeTangents();
-      model.meshes.push_back(std::move(m));
-      model.mesh_material.push_back(g.material);
-      model.mesh_transform.push_back(mat4(1.0f));
-    }
+  ObjMaterials converter(path, obj.mtl_of, model);
+  for (size_t i = 0; i < obj.materials.size(); ++i)
+    model.materials.push_back(converter.convert(i, obj.materials[i]));
+  ShapeSplitter splitter(path, obj, limits);
+  for (size_t s = 0; s < obj.shapes.size(); ++s) {
+    std::vector<Group> groups = splitter.split(s);
+    addShapeMeshes(path, obj, s, groups, model);
   }
   if (model.meshes.empty()) throwInput("{}: the OBJ file has no faces", path);
   return model;

@@ -125,110 +125,152 @@ const Element* Header::find(std::string_view element) const {
   return nullptr;
 }
 
-Header parseHeader(const std::string& name, std::string_view bytes) {
-  Header h;
-  bool have_format = false;
-  int line_no = 0;
-  int first_free_text = 0;  // the first line read as free text, for the missing end_header
-  size_t pos = 0;
-  auto fail = [&](std::string_view msg) { throwInput("{}: line {}: {}", name, line_no, msg); };
-  for (;;) {
-    if (pos >= bytes.size()) {
-      if (line_no == 0) throwInput("{}: empty file (expected a PLY header)", name);
-      throwInput("{}: the PLY header has no end_header line (the file ends at line {}{})", name,
-                 line_no,
-                 first_free_text
-                     ? fmt::format("; lines from {} on were read as free text", first_free_text)
+namespace {
+
+// The header's lines read one at a time, each keyword by its own member.
+class HeaderParser {
+ public:
+  HeaderParser(const std::string& name, std::string_view bytes) : name_(name), bytes_(bytes) {}
+
+  Header parse() {
+    for (;;) {
+      const std::string_view line = nextLine();
+      if (line_no_ == 1) {
+        if (line != "ply") throwInput("{}: not a PLY file (the first line must be 'ply')", name_);
+        continue;
+      }
+      std::vector<std::string_view> t = tokens(line);
+      if (t.empty()) continue;
+      std::string_view key = t[0];
+      if (key == "comment" || key == "obj_info") continue;
+      if (key == "end_header") break;
+      if (key == "format")
+        format(t);
+      else if (key == "element")
+        element(t);
+      else if (key == "property")
+        property(t);
+      else
+        unknownLine(key, line);
+    }
+    if (!have_format_) throwInput("{}: the PLY header has no 'format' line", name_);
+    h_.data_offset = pos_;
+    h_.data_line = line_no_ + 1;
+    return std::move(h_);
+  }
+
+ private:
+  [[noreturn]] void fail(std::string_view msg) const {
+    throwInput("{}: line {}: {}", name_, line_no_, msg);
+  }
+
+  // The next line without its end of line; the end of the file before end_header is an error.
+  std::string_view nextLine() {
+    if (pos_ >= bytes_.size()) {
+      if (line_no_ == 0) throwInput("{}: empty file (expected a PLY header)", name_);
+      throwInput("{}: the PLY header has no end_header line (the file ends at line {}{})", name_,
+                 line_no_,
+                 first_free_text_
+                     ? fmt::format("; lines from {} on were read as free text", first_free_text_)
                      : std::string());
     }
-    size_t eol = bytes.find('\n', pos);
-    size_t next = eol == std::string_view::npos ? bytes.size() : eol + 1;
-    std::string_view line = bytes.substr(pos, next - pos);
+    size_t eol = bytes_.find('\n', pos_);
+    size_t next = eol == std::string_view::npos ? bytes_.size() : eol + 1;
+    std::string_view line = bytes_.substr(pos_, next - pos_);
     while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.remove_suffix(1);
-    pos = next;
-    ++line_no;
-    if (line_no == 1) {
-      if (line != "ply") throwInput("{}: not a PLY file (the first line must be 'ply')", name);
-      continue;
-    }
-    std::vector<std::string_view> t = tokens(line);
-    if (t.empty()) continue;
-    std::string_view key = t[0];
-    if (key == "comment" || key == "obj_info") continue;
-    if (key == "end_header") break;
-    if (key == "format") {
-      if (have_format) fail("a second 'format' line");
-      if (t.size() != 3) fail("expected 'format ascii|binary_little_endian|binary_big_endian 1.0'");
-      if (t[1] == "ascii")
-        h.format = Format::kAscii;
-      else if (t[1] == "binary_little_endian")
-        h.format = Format::kBinaryLittleEndian;
-      else if (t[1] == "binary_big_endian")
-        h.format = Format::kBinaryBigEndian;
-      else
-        fail(
-            fmt::format("unknown format '{}' (expected ascii, binary_little_endian or "
-                        "binary_big_endian)",
-                        t[1]));
-      if (t[2] != "1.0") fail(fmt::format("unsupported PLY version '{}' (expected 1.0)", t[2]));
-      have_format = true;
-    } else if (key == "element") {
-      if (t.size() != 3) fail("expected 'element <name> <count>'");
-      Element e;
-      e.name = std::string(t[1]);
-      e.line = line_no;
-      auto r = std::from_chars(t[2].data(), t[2].data() + t[2].size(), e.count);
-      if (r.ec != std::errc() || r.ptr != t[2].data() + t[2].size())
-        fail(
-            fmt::format("element {}: count '{}' is not a number in 0..{}", t[1], t[2], UINT64_MAX));
-      if (h.find(e.name)) fail(fmt::format("element '{}' is declared twice", t[1]));
-      h.elements.push_back(std::move(e));
-    } else if (key == "property") {
-      if (h.elements.empty()) fail("a property before any element");
-      Property p;
-      if (t.size() == 5 && t[1] == "list") {
-        auto count_type = parseType(t[2]);
-        auto item_type = parseType(t[3]);
-        if (!count_type || !item_type)
-          fail(fmt::format("unknown type '{}' (expected one of {})", count_type ? t[3] : t[2],
-                           kTypeNames));
-        if (!isInteger(*count_type))
-          fail(fmt::format("list {}: the length type {} must be an integer type", t[4], t[2]));
-        p.is_list = true;
-        p.count_type = *count_type;
-        p.type = *item_type;
-        p.name = std::string(t[4]);
-      } else if (t.size() == 3 && t[1] != "list") {
-        auto type = parseType(t[1]);
-        if (!type) fail(fmt::format("unknown type '{}' (expected one of {})", t[1], kTypeNames));
-        p.type = *type;
-        p.name = std::string(t[2]);
-      } else {
-        fail("expected 'property <type> <name>' or 'property list <type> <type> <name>'");
-      }
-      h.elements.back().properties.push_back(std::move(p));
-    } else {
-      const std::string shown(key.substr(0, 40));
-      if (const auto near = nearKeyword(key))
-        fail(
-            fmt::format("unknown header keyword '{}' (a misspelt '{}'? expected format, element, "
-                        "property, comment, obj_info or end_header)",
-                        shown, *near));
-      if (!isText(line))
-        fail("a header line holds bytes that are not text (binary data before end_header?)");
-      if (looksNumeric(key))
-        fail(
-            fmt::format("'{}' is a number, not a header keyword (data before end_header?)", shown));
-      if (!first_free_text) first_free_text = line_no;
-      h.warnings.push_back(
-          fmt::format("{}: line {}: '{}' is not a header keyword; the line is read as a comment",
-                      name, line_no, line.substr(line.find_first_not_of(" \t")).substr(0, 60)));
-    }
+    pos_ = next;
+    ++line_no_;
+    return line;
   }
-  if (!have_format) throwInput("{}: the PLY header has no 'format' line", name);
-  h.data_offset = pos;
-  h.data_line = line_no + 1;
-  return h;
+
+  void format(const std::vector<std::string_view>& t) {
+    if (have_format_) fail("a second 'format' line");
+    if (t.size() != 3) fail("expected 'format ascii|binary_little_endian|binary_big_endian 1.0'");
+    if (t[1] == "ascii")
+      h_.format = Format::kAscii;
+    else if (t[1] == "binary_little_endian")
+      h_.format = Format::kBinaryLittleEndian;
+    else if (t[1] == "binary_big_endian")
+      h_.format = Format::kBinaryBigEndian;
+    else
+      fail(
+          fmt::format("unknown format '{}' (expected ascii, binary_little_endian or "
+                      "binary_big_endian)",
+                      t[1]));
+    if (t[2] != "1.0") fail(fmt::format("unsupported PLY version '{}' (expected 1.0)", t[2]));
+    have_format_ = true;
+  }
+
+  void element(const std::vector<std::string_view>& t) {
+    if (t.size() != 3) fail("expected 'element <name> <count>'");
+    Element e;
+    e.name = std::string(t[1]);
+    e.line = line_no_;
+    auto r = std::from_chars(t[2].data(), t[2].data() + t[2].size(), e.count);
+    if (r.ec != std::errc() || r.ptr != t[2].data() + t[2].size())
+      fail(fmt::format("element {}: count '{}' is not a number in 0..{}", t[1], t[2], UINT64_MAX));
+    if (h_.find(e.name)) fail(fmt::format("element '{}' is declared twice", t[1]));
+    h_.elements.push_back(std::move(e));
+  }
+
+  void property(const std::vector<std::string_view>& t) {
+    if (h_.elements.empty()) fail("a property before any element");
+    Property p;
+    if (t.size() == 5 && t[1] == "list") {
+      auto count_type = parseType(t[2]);
+      auto item_type = parseType(t[3]);
+      if (!count_type || !item_type)
+        fail(fmt::format("unknown type '{}' (expected one of {})", count_type ? t[3] : t[2],
+                         kTypeNames));
+      if (!isInteger(*count_type))
+        fail(fmt::format("list {}: the length type {} must be an integer type", t[4], t[2]));
+      p.is_list = true;
+      p.count_type = *count_type;
+      p.type = *item_type;
+      p.name = std::string(t[4]);
+    } else if (t.size() == 3 && t[1] != "list") {
+      auto type = parseType(t[1]);
+      if (!type) fail(fmt::format("unknown type '{}' (expected one of {})", t[1], kTypeNames));
+      p.type = *type;
+      p.name = std::string(t[2]);
+    } else {
+      fail("expected 'property <type> <name>' or 'property list <type> <type> <name>'");
+    }
+    h_.elements.back().properties.push_back(std::move(p));
+  }
+
+  // A line of no keyword: a misspelt keyword, binary or numeric data are errors; free text is
+  // read as a comment, with a warning.
+  void unknownLine(std::string_view key, std::string_view line) {
+    const std::string shown(key.substr(0, 40));
+    if (const auto near = nearKeyword(key))
+      fail(
+          fmt::format("unknown header keyword '{}' (a misspelt '{}'? expected format, element, "
+                      "property, comment, obj_info or end_header)",
+                      shown, *near));
+    if (!isText(line))
+      fail("a header line holds bytes that are not text (binary data before end_header?)");
+    if (looksNumeric(key))
+      fail(fmt::format("'{}' is a number, not a header keyword (data before end_header?)", shown));
+    if (!first_free_text_) first_free_text_ = line_no_;
+    h_.warnings.push_back(
+        fmt::format("{}: line {}: '{}' is not a header keyword; the line is read as a comment",
+                    name_, line_no_, line.substr(line.find_first_not_of(" \t")).substr(0, 60)));
+  }
+
+  const std::string& name_;
+  std::string_view bytes_;
+  Header h_;
+  bool have_format_ = false;
+  int line_no_ = 0;
+  int first_free_text_ = 0;  // the first line read as free text, for the missing end_header
+  size_t pos_ = 0;
+};
+
+}  // namespace
+
+Header parseHeader(const std::string& name, std::string_view bytes) {
+  return HeaderParser(name, bytes).parse();
 }
 
 void checkDataSize(const std::string& name, const Header& h, size_t size) {

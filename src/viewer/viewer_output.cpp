@@ -9,15 +9,7 @@
 namespace mirage {
 
 const char* truthModeName(TruthMode mode) {
-  switch (mode) {
-    case TruthMode::kOff:
-      return "off";
-    case TruthMode::kSplit:
-      return "split";
-    case TruthMode::kFlip:
-      return "flip";
-  }
-  return "off";
+  return choiceName<TruthMode>(kTruthModes, mode);
 }
 
 ViewerOutput::ViewerOutput()

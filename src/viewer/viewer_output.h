@@ -4,6 +4,7 @@
 // plus the PSNR of the frame on the reference's reflector pixels.
 #pragma once
 
+#include "core/choices.h"
 #include "core/display.h"
 #include "gpu/handle.h"
 #include "gpu/program.h"
@@ -14,6 +15,8 @@
 namespace mirage {
 
 enum class TruthMode { kOff = 0, kSplit = 1, kFlip = 2 };
+inline constexpr Choice<TruthMode> kTruthModes[] = {
+    {"off", TruthMode::kOff}, {"split", TruthMode::kSplit}, {"flip", TruthMode::kFlip}};
 const char* truthModeName(TruthMode mode);
 
 struct OutputSettings {

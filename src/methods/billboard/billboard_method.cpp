@@ -45,9 +45,7 @@ MethodEntry billboardMethodEntry() {
   entry.info.min_order = 1;
   entry.info.params = billboardStageParams();
   entry.info.counters = {"billboard_captures", "environment_captures"};
-  entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
-    return std::make_unique<BillboardMethod>(setup);
-  };
+  entry.create = factoryOf<BillboardMethod>();
   return entry;
 }
 

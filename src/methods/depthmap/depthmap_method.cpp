@@ -202,9 +202,7 @@ MethodEntry depthmapMethodEntry() {
   for (const ParamSpec& p : billboardStageParams()) entry.info.params.push_back(p);
   entry.info.counters = {"depthmap_color_captures", "depthmap_depth_captures", "srdm_builds",
                          "billboard_captures", "environment_captures"};
-  entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
-    return std::make_unique<DepthMapMethod>(setup);
-  };
+  entry.create = factoryOf<DepthMapMethod>();
   return entry;
 }
 

@@ -164,9 +164,7 @@ MethodEntry envmapMethodEntry() {
   entry.info.description =
       "a cube map captured at each reflector's centre, looked up by direction (reflection probe)";
   entry.info.params = {envmapSizeParam()};
-  entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
-    return std::make_unique<EnvmapMethod>(setup, Variant::kProbes);
-  };
+  entry.create = factoryOf<EnvmapMethod>(Variant::kProbes);
   return entry;
 }
 
@@ -178,9 +176,7 @@ MethodEntry envmapBoxMethodEntry() {
       "the reflection probes looked up through a box proxy of the room (parallax-corrected cube "
       "map)";
   entry.info.params = {envmapSizeParam(), probeProxyParam()};
-  entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
-    return std::make_unique<EnvmapMethod>(setup, Variant::kBox);
-  };
+  entry.create = factoryOf<EnvmapMethod>(Variant::kBox);
   return entry;
 }
 
@@ -189,9 +185,7 @@ MethodEntry envmapInfiniteMethodEntry() {
   entry.info.name = "envmap-infinite";
   entry.info.description = "the scene's distant environment only (light probe at infinity)";
   entry.info.max_order = 1;
-  entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
-    return std::make_unique<EnvmapMethod>(setup, Variant::kInfinite);
-  };
+  entry.create = factoryOf<EnvmapMethod>(Variant::kInfinite);
   return entry;
 }
 

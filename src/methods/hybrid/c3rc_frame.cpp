@@ -39,6 +39,78 @@ float lodStride(float density, uint32_t pixels, long long kept) {
   return std::max(1.0f, float(double(kept) / (double(density) * double(pixels))));
 }
 
+// The visible reflector triangles large enough to project (counted in `frame`).
+std::vector<TriangleRef> trianglesToProject(size_t reflectors,
+                                            const std::vector<std::vector<uint32_t>>& pixels,
+                                            int min_pixels, C3rcFrame& frame) {
+  std::vector<TriangleRef> triangles;
+  for (size_t r = 0; r < reflectors; ++r)
+    for (uint32_t t = 0; t < uint32_t(pixels[r].size()); ++t) {
+      if (pixels[r][t] == 0) continue;
+      ++frame.visible_triangles;
+      if (int(pixels[r][t]) < min_pixels)
+        ++frame.small_triangles;
+      else
+        triangles.push_back({int(r), t});
+    }
+  return triangles;
+}
+
+// A reflector triangle's world corners and normals; false for a degenerate one (no area, or
+// non-finite or zero vectors), which gets no C3RC.
+bool worldTriangle(const Mesh& mesh, uint32_t triangle, const mat4& model, vec3 (&v)[3],
+                   vec3 (&n)[3]) {
+  const mat3 normal_matrix = normalMatrix(model);
+  const uvec3 tri = mesh.triangles[triangle];
+  for (int k = 0; k < 3; ++k) {
+    v[k] = vec3(model * vec4(mesh.positions[tri[k]], 1.0f));
+    n[k] = normal_matrix * mesh.normals[tri[k]];
+  }
+  const float area2 = glm::length(glm::cross(v[1] - v[0], v[2] - v[0]));
+  bool ok = area2 > 1e-12f && std::isfinite(area2);
+  for (int k = 0; k < 3 && ok; ++k)
+    ok = finite(v[k]) && finite(n[k]) && glm::dot(n[k], n[k]) > 0.0f;
+  return ok;
+}
+
+// The work items of C3RC `c3rc` over one cloud: the leaves its object-space C3RC keeps, with
+// neighbouring leaves (contiguous ranges of the cloud) merged into one longer item, which the
+// splatting shader runs with fewer idle invocations.
+void addCloudItems(int c3rc, const PointCloud& cloud, const C3rcData& in_object, Culling culling,
+                   Local& local) {
+  local.leaves.clear();
+  cullLeaves(cloud.tree, in_object, culling, local.leaves, local.cull);
+  std::sort(local.leaves.begin(), local.leaves.end(), [&](uint32_t a, uint32_t b) {
+    return cloud.tree.nodes()[a].begin < cloud.tree.nodes()[b].begin;
+  });
+  uint32_t run_begin = 0, run_end = 0;
+  auto flush = [&] {
+    if (run_end == run_begin) return;
+    local.items.push_back(ivec4(c3rc, int(cloud.offset + run_begin), int(run_end - run_begin), 0));
+  };
+  for (uint32_t leaf : local.leaves) {
+    const KdNode& node = cloud.tree.nodes()[leaf];
+    if (node.begin != run_end || run_end - run_begin >= kMaxItemPoints) {
+      flush();
+      run_begin = node.begin;
+    }
+    run_end = node.end;
+  }
+  flush();
+}
+
+// The level-of-detail stride of the items from `first_item` on (one C3RC's), from its pixels.
+void setLodStride(Local& local, size_t first_item, float density, uint32_t pixels) {
+  long long kept = 0;
+  for (size_t k = first_item; k < local.items.size(); ++k) kept += local.items[k].z;
+  const float stride = lodStride(density, pixels, kept);
+  for (size_t k = first_item; k < local.items.size(); ++k) {
+    local.items[k].w = std::bit_cast<int>(stride);
+    local.lod_points += (long long)(std::ceil(float(local.items[k].z) / stride));
+  }
+  local.kept_points += kept;
+}
+
 }  // namespace
 
 C3rcFrame buildC3rcFrame(const Scene& scene, const std::vector<int>& reflectors,
@@ -48,16 +120,8 @@ C3rcFrame buildC3rcFrame(const Scene& scene, const std::vector<int>& reflectors,
                          const std::vector<const Mesh*>* meshes) {
   Stopwatch watch;
   C3rcFrame frame;
-  std::vector<TriangleRef> triangles;
-  for (size_t r = 0; r < reflectors.size(); ++r)
-    for (uint32_t t = 0; t < uint32_t(pixels[r].size()); ++t) {
-      if (pixels[r][t] == 0) continue;
-      ++frame.visible_triangles;
-      if (int(pixels[r][t]) < options.min_pixels)
-        ++frame.small_triangles;
-      else
-        triangles.push_back({int(r), t});
-    }
+  const std::vector<TriangleRef> triangles =
+      trianglesToProject(reflectors.size(), pixels, options.min_pixels, frame);
   // Each cloud's world -> object map: the query moves, the tree stays.
   std::vector<mat4> to_object;
   for (const PointCloud& c : points.clouds())
@@ -69,21 +133,10 @@ C3rcFrame buildC3rcFrame(const Scene& scene, const std::vector<int>& reflectors,
     Local& local = locals.local();
     const TriangleRef ref = triangles[i];
     const int instance = reflectors[size_t(ref.reflector)];
-    const mat4& model = matrices[size_t(instance)];
-    const mat3 normal_matrix = normalMatrix(model);
     const Mesh& mesh = meshes ? *(*meshes)[size_t(instance)]
                               : scene.meshes[size_t(scene.instances[size_t(instance)].mesh)];
-    const uvec3 tri = mesh.triangles[ref.triangle];
     vec3 v[3], n[3];
-    for (int k = 0; k < 3; ++k) {
-      v[k] = vec3(model * vec4(mesh.positions[tri[k]], 1.0f));
-      n[k] = normal_matrix * mesh.normals[tri[k]];
-    }
-    const float area2 = glm::length(glm::cross(v[1] - v[0], v[2] - v[0]));
-    bool ok = area2 > 1e-12f && std::isfinite(area2);
-    for (int k = 0; k < 3 && ok; ++k)
-      ok = finite(v[k]) && finite(n[k]) && glm::dot(n[k], n[k]) > 0.0f;
-    if (!ok) {
+    if (!worldTriangle(mesh, ref.triangle, matrices[size_t(instance)], v, n)) {
       ++local.degenerate;
       frame.c3rcs[i] = C3rcData{};  // never referenced by an item
       frame.c3rcs[i].info.z = float(MIRAGE_C3RC_DEGENERATE);
@@ -93,41 +146,11 @@ C3rcFrame buildC3rcFrame(const Scene& scene, const std::vector<int>& reflectors,
     frame.c3rcs[i] = c;
     if (int(c.info.z) & MIRAGE_C3RC_MULTIPLE) ++local.multiple;
     const size_t first_item = local.items.size();
-    for (size_t k = 0; options.cull_on_cpu && k < points.clouds().size(); ++k) {
-      const PointCloud& cloud = points.clouds()[k];
-      local.leaves.clear();
-      cullLeaves(cloud.tree, transformC3rc(c, to_object[k]), options.culling, local.leaves,
-                 local.cull);
-      // Leaves are contiguous ranges of the cloud: neighbours merge into one longer item, which
-      // the splatting shader runs with fewer idle invocations.
-      std::sort(local.leaves.begin(), local.leaves.end(), [&](uint32_t a, uint32_t b) {
-        return cloud.tree.nodes()[a].begin < cloud.tree.nodes()[b].begin;
-      });
-      uint32_t run_begin = 0, run_end = 0;
-      auto flush = [&] {
-        if (run_end == run_begin) return;
-        local.items.push_back(
-            ivec4(int(i), int(cloud.offset + run_begin), int(run_end - run_begin), 0));
-      };
-      for (uint32_t leaf : local.leaves) {
-        const KdNode& node = cloud.tree.nodes()[leaf];
-        if (node.begin != run_end || run_end - run_begin >= kMaxItemPoints) {
-          flush();
-          run_begin = node.begin;
-        }
-        run_end = node.end;
-      }
-      flush();
-    }
-    long long kept = 0;
-    for (size_t k = first_item; k < local.items.size(); ++k) kept += local.items[k].z;
-    const float stride =
-        lodStride(options.lod_density, pixels[size_t(ref.reflector)][ref.triangle], kept);
-    for (size_t k = first_item; k < local.items.size(); ++k) {
-      local.items[k].w = std::bit_cast<int>(stride);
-      local.lod_points += (long long)(std::ceil(float(local.items[k].z) / stride));
-    }
-    local.kept_points += kept;
+    for (size_t k = 0; options.cull_on_cpu && k < points.clouds().size(); ++k)
+      addCloudItems(int(i), points.clouds()[k], transformC3rc(c, to_object[k]), options.culling,
+                    local);
+    setLodStride(local, first_item, options.lod_density,
+                 pixels[size_t(ref.reflector)][ref.triangle]);
   });
   for (Local& local : locals) {
     frame.items.insert(frame.items.end(), local.items.begin(), local.items.end());

@@ -408,9 +408,7 @@ MethodEntry hybridMethodEntry() {
                       "level of detail: project at most this many points per visible pixel of "
                       "a reflector triangle (a uniform subsample with larger splats; 0: all)"),
       envmapSizeParam()};
-  entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
-    return std::make_unique<HybridMethod>(setup);
-  };
+  entry.create = factoryOf<HybridMethod>();
   return entry;
 }
 

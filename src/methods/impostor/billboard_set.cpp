@@ -43,23 +43,132 @@ BillboardSpec volumeBillboard(const vec3& centre, float radius, const vec3& view
                          distance + 1.01f * radius, vec3(0, 1, 0));
 }
 
+// The reflectors' bounding spheres (the viewpoints of their billboards) and their centroid.
+struct ReflectorSpheres {
+  std::vector<int> instances;
+  std::vector<vec3> centre;
+  std::vector<float> radius;
+  vec3 centroid{0.0f};
+};
+
+ReflectorSpheres reflectorSpheres(const Scene& scene, float time) {
+  ReflectorSpheres r;
+  r.instances = scene.reflectorInstances();
+  const size_t count = r.instances.size();
+  r.centre.assign(count, vec3(0.0f));
+  r.radius.assign(count, 0.0f);
+  for (size_t k = 0; k < count; ++k) {
+    Bounds3 b = scene.instanceBounds(r.instances[k], time);
+    r.centre[k] = b.center();
+    r.radius[k] = b.radius();
+    r.centroid += b.center() / float(count);
+  }
+  return r;
+}
+
+// A planar object's own square, captured head-on from the reflectors' side; `area` is set to
+// the object's area and `normal` to its normal towards the reflectors.
+BillboardSpec planarBillboard(const Scene& scene, int i, float time,
+                              const ReflectorSpheres& reflectors, float fov, float& area,
+                              vec3& normal) {
+  const mat4 m = scene.instances[size_t(i)].matrixAt(time);
+  vec3 n;
+  isPlanarInstance(scene, i, m, &n);
+  const Bounds3 local = scene.localBounds(i);
+  const vec3 e = local.extent();
+  const int thin = e.x <= e.y && e.x <= e.z ? 0 : (e.y <= e.z ? 1 : 2);
+  const int a1 = (thin + 1) % 3, a2 = (thin + 2) % 3;
+  vec3 axis1(0.0f), axis2(0.0f);
+  axis1[a1] = e[a1];
+  axis2[a2] = e[a2];
+  const vec3 side1 = mat3(m) * axis1, side2 = mat3(m) * axis2;
+  const vec3 centre = transformPoint(m, local.center());
+  if (!reflectors.instances.empty() && glm::dot(reflectors.centroid - centre, n) < 0.0f) n = -n;
+  const float half = 0.5f * std::max({glm::length(side1), glm::length(side2), 1e-6f});
+  const float distance = half / std::tan(glm::radians(fov) * 0.5f);
+  vec3 up = glm::length(side2) > 0.0f ? glm::normalize(side2) : vec3(0, 1, 0);
+  BillboardSpec b = facingBillboard(centre, n, distance, fov, 0.5f * distance, 1.5f * distance, up);
+  b.kind = BillboardSpec::Kind::kPlanar;
+  b.object = i;
+  area = glm::length(glm::cross(side1, side2));
+  normal = n;
+  return b;
+}
+
+// The planar objects' billboards, shared by every reflector's list (their indices returned).
+// The ground (for the morph) is the largest horizontal one: with its walls it forms one box,
+// and it leaves the lists.
+std::vector<int> addPlanarBillboards(BillboardSet& set, const Scene& scene,
+                                     const std::vector<int>& planar, float time,
+                                     const BillboardSetOptions& options,
+                                     const ReflectorSpheres& reflectors) {
+  std::vector<int> planar_index;
+  float ground_area = 0.0f;
+  for (int i : planar) {
+    float area = 0.0f;
+    vec3 n;
+    BillboardSpec b = planarBillboard(scene, i, time, reflectors, options.fov_degrees, area, n);
+    b.layer = set.surface_layers++;
+    if (options.morph_height > 0.0f && std::abs(n.y) > 0.99f && area > ground_area) {
+      ground_area = area;
+      set.ground = int(set.billboards.size());
+    }
+    planar_index.push_back(int(set.billboards.size()));
+    set.billboards.push_back(b);
+  }
+  if (set.ground >= 0) {
+    const BillboardSpec& g = set.billboards[size_t(set.ground)];
+    const Bounds3 gb = scene.instanceBounds(g.object, time);
+    set.morph_box.lo = vec3(gb.lo.x, gb.center().y, gb.lo.z);
+    set.morph_box.hi = vec3(gb.hi.x, gb.center().y + options.morph_height, gb.hi.z);
+    planar_index.erase(std::find(planar_index.begin(), planar_index.end(), set.ground));
+  }
+  return planar_index;
+}
+
+// Reflector r's list: the shared planar billboards, its own object billboards, then the
+// reflective billboards of the other reflectors, all seen from its centre.
+void addReflectorList(BillboardSet& set, int r, const Scene& scene,
+                      const std::vector<int>& planar_index, const std::vector<int>& objects,
+                      float time, float fov, const ReflectorSpheres& reflectors) {
+  const vec3 viewer = reflectors.centre[size_t(r)];
+  shading::BillboardRange& range = set.ranges[size_t(r)];
+  range.range.x = int(set.entries.size());
+  for (int index : planar_index) set.entries.push_back(index);
+  for (int i : objects) {
+    const Bounds3 b = scene.instanceBounds(i, time);
+    BillboardSpec spec = volumeBillboard(b.center(), b.radius(), viewer, fov);
+    spec.kind = BillboardSpec::Kind::kObject;
+    spec.object = i;
+    spec.reflector = r;
+    spec.layer = set.surface_layers++;
+    set.entries.push_back(int(set.billboards.size()));
+    set.billboards.push_back(spec);
+  }
+  range.range.y = int(set.entries.size()) - range.range.x;
+  range.range.z = int(set.entries.size());
+  for (int k = 0; k < int(reflectors.instances.size()); ++k) {
+    if (k == r) continue;
+    BillboardSpec spec =
+        volumeBillboard(reflectors.centre[size_t(k)], reflectors.radius[size_t(k)], viewer, fov);
+    spec.kind = BillboardSpec::Kind::kReflective;
+    spec.object = reflectors.instances[size_t(k)];
+    spec.reflector = r;
+    spec.represents = k;
+    spec.layer = set.surface_layers++;
+    spec.position_layer = set.position_layers++;
+    set.entries.push_back(int(set.billboards.size()));
+    set.billboards.push_back(spec);
+  }
+  range.range.w = int(set.entries.size()) - range.range.z;
+}
+
 }  // namespace
 
 BillboardSet placeBillboards(const Scene& scene, float time, const BillboardSetOptions& options) {
   BillboardSet set;
-  const std::vector<int> reflectors = scene.reflectorInstances();
-  const int r_count = int(reflectors.size());
-  std::vector<vec3> reflector_centre(size_t(r_count), vec3(0.0f));
-  std::vector<float> reflector_radius(size_t(r_count), 0.0f);
-  vec3 reflectors_centroid(0.0f);
-  for (int k = 0; k < r_count; ++k) {
-    Bounds3 b = scene.instanceBounds(reflectors[size_t(k)], time);
-    reflector_centre[size_t(k)] = b.center();
-    reflector_radius[size_t(k)] = b.radius();
-    reflectors_centroid += b.center() / float(r_count);
-  }
-  set.environment_centre = reflectors_centroid;
-
+  const ReflectorSpheres reflectors = reflectorSpheres(scene, time);
+  set.environment_centre = reflectors.centroid;
   std::vector<int> planar, objects;
   for (int i = 0; i < int(scene.instances.size()); ++i) {
     if (scene.isReflector(i)) continue;
@@ -72,83 +181,11 @@ BillboardSet placeBillboards(const Scene& scene, float time, const BillboardSetO
     else
       set.unbillboarded.push_back(i);
   }
-
-  // Planar objects: their own square, captured head-on from the reflectors' side. The ground
-  // (for the morph) is the largest horizontal one.
-  std::vector<int> planar_index;
-  float ground_area = 0.0f;
-  for (int i : planar) {
-    const mat4 m = scene.instances[size_t(i)].matrixAt(time);
-    vec3 n;
-    isPlanarInstance(scene, i, m, &n);
-    const Bounds3 local = scene.localBounds(i);
-    const vec3 e = local.extent();
-    const int thin = e.x <= e.y && e.x <= e.z ? 0 : (e.y <= e.z ? 1 : 2);
-    const int a1 = (thin + 1) % 3, a2 = (thin + 2) % 3;
-    vec3 axis1(0.0f), axis2(0.0f);
-    axis1[a1] = e[a1];
-    axis2[a2] = e[a2];
-    const vec3 side1 = mat3(m) * axis1, side2 = mat3(m) * axis2;
-    const vec3 centre = transformPoint(m, local.center());
-    if (r_count > 0 && glm::dot(reflectors_centroid - centre, n) < 0.0f) n = -n;
-    const float half = 0.5f * std::max({glm::length(side1), glm::length(side2), 1e-6f});
-    const float distance = half / std::tan(glm::radians(options.fov_degrees) * 0.5f);
-    vec3 up = glm::length(side2) > 0.0f ? glm::normalize(side2) : vec3(0, 1, 0);
-    BillboardSpec b = facingBillboard(centre, n, distance, options.fov_degrees, 0.5f * distance,
-                                      1.5f * distance, up);
-    b.kind = BillboardSpec::Kind::kPlanar;
-    b.object = i;
-    b.layer = set.surface_layers++;
-    const float area = glm::length(glm::cross(side1, side2));
-    if (options.morph_height > 0.0f && std::abs(n.y) > 0.99f && area > ground_area) {
-      ground_area = area;
-      set.ground = int(set.billboards.size());
-    }
-    planar_index.push_back(int(set.billboards.size()));
-    set.billboards.push_back(b);
-  }
-  if (set.ground >= 0) {
-    // The ground and its walls form one box; the ground leaves the lists.
-    const BillboardSpec& g = set.billboards[size_t(set.ground)];
-    const Bounds3 gb = scene.instanceBounds(g.object, time);
-    set.morph_box.lo = vec3(gb.lo.x, gb.center().y, gb.lo.z);
-    set.morph_box.hi = vec3(gb.hi.x, gb.center().y + options.morph_height, gb.hi.z);
-    planar_index.erase(std::find(planar_index.begin(), planar_index.end(), set.ground));
-  }
-
-  set.ranges.resize(size_t(r_count));
-  for (int r = 0; r < r_count; ++r) {
-    const vec3 viewer = reflector_centre[size_t(r)];
-    shading::BillboardRange& range = set.ranges[size_t(r)];
-    range.range.x = int(set.entries.size());
-    for (int index : planar_index) set.entries.push_back(index);
-    for (int i : objects) {
-      const Bounds3 b = scene.instanceBounds(i, time);
-      BillboardSpec spec = volumeBillboard(b.center(), b.radius(), viewer, options.fov_degrees);
-      spec.kind = BillboardSpec::Kind::kObject;
-      spec.object = i;
-      spec.reflector = r;
-      spec.layer = set.surface_layers++;
-      set.entries.push_back(int(set.billboards.size()));
-      set.billboards.push_back(spec);
-    }
-    range.range.y = int(set.entries.size()) - range.range.x;
-    range.range.z = int(set.entries.size());
-    for (int k = 0; k < r_count; ++k) {
-      if (k == r) continue;
-      BillboardSpec spec = volumeBillboard(reflector_centre[size_t(k)], reflector_radius[size_t(k)],
-                                           viewer, options.fov_degrees);
-      spec.kind = BillboardSpec::Kind::kReflective;
-      spec.object = reflectors[size_t(k)];
-      spec.reflector = r;
-      spec.represents = k;
-      spec.layer = set.surface_layers++;
-      spec.position_layer = set.position_layers++;
-      set.entries.push_back(int(set.billboards.size()));
-      set.billboards.push_back(spec);
-    }
-    range.range.w = int(set.entries.size()) - range.range.z;
-  }
+  const std::vector<int> planar_index =
+      addPlanarBillboards(set, scene, planar, time, options, reflectors);
+  set.ranges.resize(reflectors.instances.size());
+  for (int r = 0; r < int(reflectors.instances.size()); ++r)
+    addReflectorList(set, r, scene, planar_index, objects, time, options.fov_degrees, reflectors);
   return set;
 }
 

@@ -77,6 +77,112 @@ void settle(int material, float cos_theta, float distance, inout vec3 sum, inout
   throughput *= vec3(m.tint) * w;
 }
 
+// What a bounce's ray meets first: a billboard (hit >= 0, at t, uv), another impostor (extra),
+// or a wall or the floor of the ground box (box; the floor is handed over as the ground
+// billboard), or nothing.
+struct BounceHit {
+  int hit;
+  float t;
+  vec2 uv;
+  bool extra;
+  vec4 extra_end;
+  bool box;
+  float t_box;
+};
+
+BounceHit nearest_bounce_hit(vec3 origin, vec3 dir, int from, bool reflective, float t_min,
+                             vec3 dox, vec3 doy, vec3 ddx, vec3 ddy) {
+  BounceHit h;
+  ivec4 range = billboard_ranges[from].range;
+  h.t = MISS_DISTANCE;
+  h.uv = vec2(0.0f);
+  // The reflector's list holds its diffuse billboards, then the reflective ones right after
+  // (range.z == range.x + range.y): one loop tests both.
+  h.hit = nearest_billboard(origin, dir, range.x, range.y + (reflective ? range.w : 0), t_min,
+                            h.t, h.uv);
+  h.extra_end = vec4(0.0f);
+  h.extra = impostor_extra_hit(origin, dir, from, reflective, t_min, h.t, dox, doy, ddx, ddy,
+                               h.extra_end);
+  if (h.extra) h.hit = -1;
+  // The ground box, if nearer than every billboard: the ground billboard through its floor,
+  // the morph on a wall, the environment through the open top.
+  int face = -1;
+  h.t_box = u_ground >= 0 ? ray_box_exit(origin, dir, u_morph_min, u_morph_max, face) : -1.0f;
+  h.box = h.t_box >= 0.0f && h.t_box < h.t && face != MIRAGE_BOX_MAX_Y;
+  if (h.box && face == MIRAGE_BOX_MIN_Y) {
+    // The box's floor is the ground's plane: the quad's coordinates of the same point.
+    h.hit = u_ground;
+    h.extra = false;
+    h.t = h.t_box;
+    BillboardData g = billboards[h.hit];
+    vec3 local = origin + h.t_box * dir - g.corner.xyz;
+    h.uv = clamp(vec2(dot(local, g.edge_u.xyz) * g.edge_u.w, dot(local, g.edge_v.xyz) * g.edge_v.w),
+                 0.0f, 1.0f);
+    h.box = false;
+  }
+  if (h.box) h.extra = false;
+  return h;
+}
+
+// Where a path ends: a billboard texel (layer >= 0, uv, footprint), another impostor (extra), a
+// reflector's base colour (reflector >= 0), or the environment along env_dir.
+struct PathEnd {
+  float layer;
+  int reflector;  // the material of a reflector hit on the last bounce
+  vec2 uv, dx, dy;
+  vec3 env_dir;
+  bool extra;
+  vec4 extra_end;
+};
+
+// A path that has met nothing yet: it ends in the environment along dir.
+PathEnd environment_end(vec3 dir) {
+  PathEnd e;
+  e.layer = -1.0f;
+  e.reflector = -1;
+  e.uv = vec2(0.0f);
+  e.dx = vec2(0.0f);
+  e.dy = vec2(0.0f);
+  e.env_dir = dir;
+  e.extra = false;
+  e.extra_end = vec4(0.0f);
+  return e;
+}
+
+// The length of the bounce's path from origin to what it hit (MISS_DISTANCE for nothing). A
+// reflective billboard stands in for its reflector: the path goes on from the surface point its
+// texel holds (set here), not from the quad, so the path's length (the attenuation distance of
+// the reflector the ray left) is measured to that point.
+float bounce_distance(BounceHit h, vec3 origin, out vec3 surface_point) {
+  BillboardData hit_board = billboards[max(h.hit, 0)];
+  bool reflective_hit =
+      !h.box && !h.extra && h.hit >= 0 && hit_board.info.x == MIRAGE_BILLBOARD_REFLECTIVE;
+  surface_point = billboard_surface_point(hit_board, h.uv);
+  return h.box ? h.t_box
+               : (reflective_hit ? length(surface_point - origin)
+                                 : (h.hit >= 0 || h.extra ? h.t : MISS_DISTANCE));
+}
+
+// The path's end, looked up once, at the level of the footprint (isotropic, as textureGrad on
+// llvmpipe, at a fraction of its cost): a cube texel spans about (pi / 2) / size radians of
+// direction, a billboard texel 1 / size of u and v. Without mip-mapping: level 0.
+vec3 path_end_radiance(PathEnd e, vec3 ddx, vec3 ddy) {
+  bool mip = frame.options.y != 0;
+  float env_size = float(textureSize(u_billboard_env, 0).x);
+  float env_footprint = max(length(ddx), length(ddy)) / length(e.env_dir) * env_size / 1.5707963f;
+  float env_lod = mip ? log2(max(env_footprint, 1.0e-8f)) : 0.0f;
+  vec3 env = textureLod(u_billboard_env, e.env_dir, env_lod).rgb;
+  float surface_size = float(textureSize(u_billboard_surface, 0).x);
+  float texel_footprint = max(length(e.dx), length(e.dy)) * surface_size;
+  float texel_lod = mip ? log2(max(texel_footprint, 1.0e-8f)) : 0.0f;
+  vec4 texel = textureLod(u_billboard_surface, vec3(e.uv, max(e.layer, 0.0f)), texel_lod);
+  // Premultiplied by coverage: dividing by alpha averages the covered texels only.
+  vec3 radiance = e.layer >= 0.0f ? texel.rgb / max(texel.a, 1.0e-4f) : env;
+  if (e.extra) radiance = impostor_extra_radiance(e.extra_end);
+  if (e.reflector >= 0) radiance = reflector_base(materials[e.reflector]);
+  return radiance;
+}
+
 // Written for llvmpipe as much as for GPUs: llvmpipe runs both sides of every branch (masked),
 // so the loop only finds hits and the path's end is looked up once, after it: one cube-map
 // lookup and one billboard-texel lookup per pixel, whichever the path ended in.
@@ -91,92 +197,51 @@ vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflecto
   vec3 sum = vec3(0.0f), throughput = vec3(1.0f);
   int pending = -1;  // the material of the reflective billboard the ray last bounced off
   float pending_cos = 0.0f;
-  // Where the path ends: a billboard texel (layer >= 0, uv, footprint) or the environment
-  // along env_dir.
-  float end_layer = -1.0f;
-  int end_reflector = -1;  // the material of a reflector hit on the last bounce
-  vec2 end_uv = vec2(0.0f), end_dx = vec2(0.0f), end_dy = vec2(0.0f);
-  vec3 env_dir = dir;
-  bool ended_extra = false;  // the path ended at another impostor (impostor_extra_hit)
-  vec4 end_extra = vec4(0.0f);
+  PathEnd end = environment_end(dir);
   for (int bounce = 1; bounce <= order; ++bounce) {
-    ivec4 range = billboard_ranges[from].range;
-    float t = MISS_DISTANCE;
-    vec2 uv = vec2(0.0f);
-    // The reflector's list holds its diffuse billboards, then the reflective ones right after
-    // (range.z == range.x + range.y): one loop tests both.
     bool reflective = bounce < order || u_last_bounce_reflective != 0;
-    int hit = nearest_billboard(origin, dir, range.x, range.y + (reflective ? range.w : 0), t_min,
-                                t, uv);
-    vec4 extra_end = vec4(0.0f);
-    bool extra =
-        impostor_extra_hit(origin, dir, from, reflective, t_min, t, dox, doy, ddx, ddy, extra_end);
-    if (extra) hit = -1;
-    // The ground box, if nearer than every billboard: the ground billboard through its floor,
-    // the morph on a wall, the environment through the open top.
-    int face = -1;
-    float t_box = u_ground >= 0 ? ray_box_exit(origin, dir, u_morph_min, u_morph_max, face) : -1.0f;
-    bool box = t_box >= 0.0f && t_box < t && face != MIRAGE_BOX_MAX_Y;
-    if (box && face == MIRAGE_BOX_MIN_Y) {
-      // The box's floor is the ground's plane: the quad's coordinates of the same point.
-      hit = u_ground;
-      extra = false;
-      t = t_box;
-      BillboardData g = billboards[hit];
-      vec3 local = origin + t_box * dir - g.corner.xyz;
-      uv = clamp(vec2(dot(local, g.edge_u.xyz) * g.edge_u.w, dot(local, g.edge_v.xyz) * g.edge_v.w),
-                 0.0f, 1.0f);
-      box = false;
-    }
-    if (box) extra = false;
-    // A reflective billboard stands in for its reflector: the path goes on from the surface
-    // point its texel holds, not from the quad, so the path's length (the attenuation distance
-    // of the reflector the ray left) is measured to that point.
-    BillboardData hit_board = billboards[max(hit, 0)];
-    bool reflective_hit =
-        !box && !extra && hit >= 0 && hit_board.info.x == MIRAGE_BILLBOARD_REFLECTIVE;
-    vec3 surface_point = billboard_surface_point(hit_board, uv);
-    float distance = box ? t_box
-                         : (reflective_hit ? length(surface_point - origin)
-                                           : (hit >= 0 || extra ? t : MISS_DISTANCE));
+    BounceHit h = nearest_bounce_hit(origin, dir, from, reflective, t_min, dox, doy, ddx, ddy);
+    float t = h.t;
+    vec3 surface_point = vec3(0.0f);
+    float distance = bounce_distance(h, origin, surface_point);
     if (pending >= 0) settle(pending, pending_cos, distance, sum, throughput);
     else first_distance = distance;
-    env_dir = dir;
-    if (box) {
-      vec3 a = origin + t_box * dir;
-      env_dir = morph_direction(a, u_morph_centre, dir, a.y - u_morph_min.y,
-                                u_morph_max.y - u_morph_min.y);
+    end.env_dir = dir;
+    if (h.box) {
+      vec3 a = origin + h.t_box * dir;
+      end.env_dir = morph_direction(a, u_morph_centre, dir, a.y - u_morph_min.y,
+                                    u_morph_max.y - u_morph_min.y);
       break;
     }
     // A reflecting surface: its normal and point, the material and the reflector left next.
     vec3 n = vec3(0.0f), p = vec3(0.0f);
     int material = -1, leaves = -1;
-    if (extra) {
-      if (!impostor_extra_reflects(extra_end, n, material, leaves)) {
-        end_extra = extra_end;
-        ended_extra = true;
+    if (h.extra) {
+      if (!impostor_extra_reflects(h.extra_end, n, material, leaves)) {
+        end.extra_end = h.extra_end;
+        end.extra = true;
         break;
       }
       p = origin + t * dir;
     } else {
-      if (hit < 0) break;
-      BillboardData b = billboards[hit];
+      if (h.hit < 0) break;
+      BillboardData b = billboards[h.hit];
       if (b.info.x == MIRAGE_BILLBOARD_DIFFUSE) {
-        end_layer = float(b.info.y);
-        end_uv = uv;
-        end_dx = billboard_uv_differential(b, dir, t, dox, ddx);
-        end_dy = billboard_uv_differential(b, dir, t, doy, ddy);
+        end.layer = float(b.info.y);
+        end.uv = h.uv;
+        end.dx = billboard_uv_differential(b, dir, t, dox, ddx);
+        end.dy = billboard_uv_differential(b, dir, t, doy, ddy);
         break;
       }
       material = b.info.w;
       leaves = b.info.z;
       if (bounce < order) {
-        n = normalize(textureLod(u_billboard_surface, vec3(uv, float(b.info.y)), 0.0f).xyz);
+        n = normalize(textureLod(u_billboard_surface, vec3(h.uv, float(b.info.y)), 0.0f).xyz);
         p = surface_point;
       }
     }
     if (bounce == order) {
-      end_reflector = material;  // no bounce left: the reflector's base colour
+      end.reflector = material;  // no bounce left: the reflector's base colour
       break;
     }
     // Continue from the reflecting surface's point, about its normal.
@@ -189,24 +254,8 @@ vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflecto
     doy += t * ddy;
     origin = p + n * t_min;
     dir = reflect(dir, n);
-    env_dir = dir;
+    end.env_dir = dir;
     from = leaves;
   }
-  // The path's end, looked up once, at the level of the footprint (isotropic, as textureGrad
-  // on llvmpipe, at a fraction of its cost): a cube texel spans about (pi / 2) / size radians
-  // of direction, a billboard texel 1 / size of u and v. Without mip-mapping: level 0.
-  bool mip = frame.options.y != 0;
-  float env_size = float(textureSize(u_billboard_env, 0).x);
-  float env_footprint = max(length(ddx), length(ddy)) / length(env_dir) * env_size / 1.5707963f;
-  float env_lod = mip ? log2(max(env_footprint, 1.0e-8f)) : 0.0f;
-  vec3 env = textureLod(u_billboard_env, env_dir, env_lod).rgb;
-  float surface_size = float(textureSize(u_billboard_surface, 0).x);
-  float texel_footprint = max(length(end_dx), length(end_dy)) * surface_size;
-  float texel_lod = mip ? log2(max(texel_footprint, 1.0e-8f)) : 0.0f;
-  vec4 texel = textureLod(u_billboard_surface, vec3(end_uv, max(end_layer, 0.0f)), texel_lod);
-  // Premultiplied by coverage: dividing by alpha averages the covered texels only.
-  vec3 radiance = end_layer >= 0.0f ? texel.rgb / max(texel.a, 1.0e-4f) : env;
-  if (ended_extra) radiance = impostor_extra_radiance(end_extra);
-  if (end_reflector >= 0) radiance = reflector_base(materials[end_reflector]);
-  return vec4(sum + throughput * radiance, first_distance);
+  return vec4(sum + throughput * path_end_radiance(end, ddx, ddy), first_distance);
 }

@@ -112,9 +112,7 @@ MethodEntry planarMethodEntry() {
       "exact planar mirrors by re-rendering the scene from the mirrored eye, the mirror plane as "
       "an oblique near plane, recursing to the reflection order (forward-mapped mirrors paper's "
       "baseline); non-planar reflectors show their base colour";
-  entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
-    return std::make_unique<PlanarMethod>(setup);
-  };
+  entry.create = factoryOf<PlanarMethod>();
   return entry;
 }
 

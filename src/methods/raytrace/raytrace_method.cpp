@@ -67,9 +67,7 @@ MethodEntry raytraceMethodEntry() {
   entry.info.gpu = false;
   entry.info.params = {ParamSpec::integer("spp", 1, 4096, 1,
                                           "ray-tracer samples per pixel (stratified, box filter)")};
-  entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
-    return std::make_unique<RaytraceMethod>(setup);
-  };
+  entry.create = factoryOf<RaytraceMethod>();
   return entry;
 }
 

@@ -195,9 +195,7 @@ MethodEntry ssrMethodEntry() {
       envmapSizeParam(), probeProxyParam()};
   entry.info.counters = {"cube_captures", "capture_passes"};
   entry.info.frame_stats = {"ssr_hit_fraction", "ssr_fallback_fraction"};
-  entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
-    return std::make_unique<SsrMethod>(setup);
-  };
+  entry.create = factoryOf<SsrMethod>();
   return entry;
 }
 

@@ -50,6 +50,31 @@ SHARED_FN float zexel_inverse_gap(int layer, vec3 d, vec3 n, float h, vec2 u,
 #define ZEXEL_INVERSE_HIT 1      // the stored surface
 #define ZEXEL_INVERSE_EXPOSED 2  // no hit, but the ray ends behind a surface (see below)
 
+// The plane holding the ray (through q along unit d, qd = q.d) and the centre: returns its unit
+// direction n, perpendicular to d, from the centre towards the ray's nearest point, and sets h,
+// the ray's distance from the centre. A ray through the centre has no plane of its own: any
+// perpendicular will do, with an offset far below any texel.
+SHARED_FN vec3 zexel_ray_plane(vec3 q, vec3 d, float qd, SHARED_OUT(float) h) {
+  vec3 towards = q - qd * d;
+  h = length(towards);
+  float least = 1.0e-6f * max(length(q), 1.0e-6f);
+  vec3 n = abs(d.x) < 0.9f ? normalize(cross(d, vec3(1.0f, 0.0f, 0.0f)))
+                           : normalize(cross(d, vec3(0.0f, 1.0f, 0.0f)));
+  if (h > least) n = towards / h;
+  h = max(h, least);
+  return n;
+}
+
+// The hit within the bracket [b, a] (angles in the ray's plane, a in front with gap ga > 0, b
+// behind with gb <= 0): the secant step on the chord, from b's side, since b may be (1, 0)
+// (t = ∞), where the crossing can lie a tiny angle away. Returns t; sets the hit's direction.
+SHARED_FN float zexel_secant_hit(vec3 d, vec3 n, float h, float qd, vec2 a, vec2 b, float ga,
+                                 float gb, SHARED_OUT(vec3) hit_direction) {
+  vec2 u = normalize(b + (a - b) * (-gb / (ga - gb)));
+  hit_direction = u.x * d + u.y * n;
+  return max(h * u.x / u.y - qd, 0.0f);
+}
+
 // The ray origin + t dir's first hit on the surface the map stores, as t; `q` is the ray's
 // origin relative to the map's centre. Steps of `step_angle` radians (at most `max_steps`) find
 // the first step from in front to behind; ZEXEL_INVERSE_BISECTIONS halvings and a secant step
@@ -68,15 +93,8 @@ SHARED_FN float zexel_inverse_warp(int layer, vec3 q, vec3 dir, float step_angle
                                    SHARED_OUT(int) status, SHARED_OUT(int) samples) {
   vec3 d = normalize(dir);
   float qd = dot(q, d);
-  vec3 towards = q - qd * d;
-  float h = length(towards);
-  // A ray through the centre has no plane of its own: any perpendicular will do, with an offset
-  // far below any texel.
-  float least = 1.0e-6f * max(length(q), 1.0e-6f);
-  vec3 n = abs(d.x) < 0.9f ? normalize(cross(d, vec3(1.0f, 0.0f, 0.0f)))
-                           : normalize(cross(d, vec3(0.0f, 1.0f, 0.0f)));
-  if (h > least) n = towards / h;
-  h = max(h, least);
+  float h = 0.0f;
+  vec3 n = zexel_ray_plane(q, d, qd, h);
   float phi0 = atan(h, qd);
   int steps = clamp(int(ceil(phi0 / step_angle)), 1, max_steps);
   float dphi = phi0 / float(steps);
@@ -139,13 +157,8 @@ SHARED_FN float zexel_inverse_warp(int layer, vec3 q, vec3 dir, float step_angle
           normalize(vec2(march.x * turn.x + march.y * turn.y, march.y * turn.x - march.x * turn.y));
     }
   }
-  if (status == ZEXEL_INVERSE_HIT) {
-    // The secant step on the chord, from b's side: b may be (1, 0) (t = ∞), where the
-    // crossing can lie a tiny angle away.
-    vec2 u = normalize(b + (a - b) * (-gb / (ga - gb)));  // ga > 0 >= gb
-    hit_direction = u.x * d + u.y * n;
-    return max(h * u.x / u.y - qd, 0.0f);
-  }
+  if (status == ZEXEL_INVERSE_HIT)
+    return zexel_secant_hit(d, n, h, qd, a, b, ga, gb, hit_direction);
   if (!was_in_front) status = ZEXEL_INVERSE_EXPOSED;
   return -1.0f;
 }

@@ -349,9 +349,7 @@ MethodEntry zexelMethodEntry() {
           "visible pixels only); auto: the pass while the rectangle holds at most "
           "twice the pixels the mirror showed the frame before")};
   for (const ParamSpec& p : ZexelCurvedReflectors::params()) entry.info.params.push_back(p);
-  entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
-    return std::make_unique<ZexelMethod>(setup);
-  };
+  entry.create = factoryOf<ZexelMethod>();
   return entry;
 }
 
