@@ -134,6 +134,16 @@ std::vector<uint64_t> GpuScene::probeKey(const std::vector<int>& diffuse) const 
   return key;
 }
 
+std::vector<vec3> GpuScene::uploadedPositions(int instance) const {
+  const Mesh& m = mesh(instance);
+  std::vector<Vertex> vertices(m.positions.size());
+  meshes_[size_t(scene_.instances[size_t(instance)].mesh)].vertices.download(
+      vertices.data(), vertices.size() * sizeof(Vertex));
+  std::vector<vec3> positions;
+  for (const Vertex& v : vertices) positions.push_back(v.position);
+  return positions;
+}
+
 const Mesh& GpuScene::mesh(int instance) const {
   const Instance& inst = scene_.instances[size_t(instance)];
   return inst.deforms() ? deformed_[size_t(instance)] : scene_.meshes[size_t(inst.mesh)];

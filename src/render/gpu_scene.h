@@ -50,6 +50,9 @@ class GpuScene {
   const mat4& instanceMatrix(int instance) const { return matrices_[size_t(instance)]; }
   const std::vector<mat4>& instanceMatrices() const { return matrices_; }
   Bounds3 instanceBounds(int instance) const;
+  // The object-space vertex positions the instance is drawn with, read back from its vertex
+  // buffer on the GPU (tests check what was uploaded).
+  std::vector<vec3> uploadedPositions(int instance) const;
 
   // Binds the instance/material buffers and the environment for any scene program.
   void bindShared() const;

@@ -101,15 +101,28 @@ TEST(RaytraceAnalytic, OrderZeroShowsReflectorBaseColour) {
 }
 
 TEST(RaytraceAnalytic, MissesSampleTheEnvironment) {
+  // An environment of two colours, the sky above the horizon and the ground below it (both
+  // exact in half precision): a ray that meets nothing shows the colour of its half, whatever
+  // the cube map's filtering, as long as it points well away from the horizon.
+  const vec3 sky(0.25f, 0.5f, 0.75f), ground(1.0f, 0.125f, 0.0f);
+  Image halves(64, 32);
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 64; ++x) halves(x, y) = vec4(y < 16 ? sky : ground, 1.0f);
+  const EnvironmentMap env = EnvironmentMap::equirect(halves, 16, 0.0f);
   Scene scene = makeBuiltinScene("sphere-over-checker");
-  EnvironmentMap env = EnvironmentMap::sky(scene.light, 16);
   RayTracer tracer(scene, env);
   tracer.prepare(0.0f);
   uint64_t rays = 0;
-  Ray up{vec3(0, 5, 0), glm::normalize(vec3(0.1f, 1.0f, 0.2f)), 0.0f, kInfinity};
+  const Ray up{vec3(0, 5, 0), glm::normalize(vec3(0.1f, 1.0f, 0.2f)), 0.0f, kInfinity};
   TracedRadiance r = tracer.trace(up, 2, rays);
   EXPECT_EQ(r.distance, sh::MISS_DISTANCE);
-  EXPECT_EQ(r.radiance, env.sample(up.direction));
+  EXPECT_EQ(r.radiance, sky);
+  // Down at 30 degrees below the horizon from far beyond the 16 x 16 floor: the ground half.
+  const Ray down{vec3(0, 5, 50), glm::normalize(vec3(0.0f, -0.5f, 0.866f)), 0.0f, kInfinity};
+  r = tracer.trace(down, 2, rays);
+  EXPECT_EQ(r.distance, sh::MISS_DISTANCE);
+  EXPECT_EQ(r.radiance, ground);
+  EXPECT_EQ(rays, 0u);  // no reflection traced on the way
 }
 
 }  // namespace

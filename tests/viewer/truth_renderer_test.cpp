@@ -79,12 +79,14 @@ TEST(TruthPsnr, IsTheMetricOverReflectorPixelsOfTheBoxFilteredFrame) {
   const DisplaySettings display;
   EXPECT_TRUE(std::isinf(truthPsnr(frame, truth, display)));  // only the left pixel counts
   truth.ids(1, 0) = 1;
-  Image down(2, 1);
-  down(0, 0) = vec4(0.2f, 0.1f, 0.3f, 1.0f);
-  down(1, 0) = vec4(0.6f, 0.1f, 0.3f, 1.0f);
-  const double expected = psnrFromMse(
-      meanSquaredError(toDisplay(down, display), toDisplay(truth.color, display), &truth.ids));
-  EXPECT_NEAR(truthPsnr(frame, truth, display), expected, 1e-9);
+  // Both pixels count: the right block's mean, red 0.6, against the reference's 0.1, and only
+  // in red. Through the clamp tone map and the sRGB curve (IEC 61966-2-1: 1.055 c^(1/2.4) -
+  // 0.055 above 0.0031308) the squared difference of that channel over 2 pixels x 3 channels.
+  DisplaySettings clamp;
+  clamp.tonemap = ToneMap::kClamp;
+  auto srgb = [](double c) { return 1.055 * std::pow(c, 1.0 / 2.4) - 0.055; };
+  const double diff = srgb(0.6) - srgb(0.1);
+  EXPECT_NEAR(truthPsnr(frame, truth, clamp), 10.0 * std::log10(6.0 / (diff * diff)), 1e-4);
   truth.ids = IdImage(2, 1);  // no reflector: no figure
   EXPECT_TRUE(std::isnan(truthPsnr(frame, truth, display)));
 }
