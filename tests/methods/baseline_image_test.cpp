@@ -39,8 +39,8 @@ TEST_F(BaselineImages, EnvmapInfiniteEqualsRaytraceWithoutLocalObjects) {
   // Where both see the sphere, the reflections agree to within rounding, except at grazing
   // silhouette pixels where the reflected direction swings fastest (a handful).
   EXPECT_TRUE(mostPixelsWithin(p.gpu, p.cpu, 2.0f / 255.0f, 0.001, &both, "reflector-within"));
-  EXPECT_TRUE(psnrAtLeast(p.gpu, p.cpu, 40.0, &both, "reflector"));
-  EXPECT_TRUE(psnrAtLeast(p.gpu, p.cpu, 40.0, nullptr, "all"));
+  EXPECT_TRUE(psnrAtLeast(p.gpu, p.cpu, floors::kEnvmapInfiniteReflector, &both));
+  EXPECT_TRUE(psnrAtLeast(p.gpu, p.cpu, floors::kEnvmapInfiniteAll, nullptr));
 }
 
 TEST_F(BaselineImages, GpuShadingEqualsCpuShading) {
@@ -51,7 +51,7 @@ TEST_F(BaselineImages, GpuShadingEqualsCpuShading) {
   settings.order = 0;
   Pair p = renderBoth(scene, "none", {360, 256}, settings);
   EXPECT_TRUE(mostPixelsWithin(p.gpu, p.cpu, 2.0f / 255.0f, 0.01, nullptr, "none-vs-order0"));
-  EXPECT_TRUE(psnrAtLeast(p.gpu, p.cpu, 35.0, nullptr, "none-vs-order0"));
+  EXPECT_TRUE(psnrAtLeast(p.gpu, p.cpu, floors::kNoneVsOrder0, nullptr));
 }
 
 TEST_F(BaselineImages, TexturesAreSampledAlikeOnGpuAndCpu) {
@@ -86,7 +86,7 @@ TEST_F(BaselineImages, EnvmapApproximatesRaytraceOnSphereOverChecker) {
   Pair p = renderBoth(scene, "envmap", {360, 256}, settings);
   // Measured: about 12.7 dB on reflector pixels at 360x256 (the checker is shifted by the
   // missing parallax); an orientation or capture error drops it below 9 dB.
-  EXPECT_TRUE(psnrAtLeast(p.gpu, p.cpu, 11.0, &p.cpu_ids, "envmap-reflector"));
+  EXPECT_TRUE(psnrAtLeast(p.gpu, p.cpu, floors::kEnvmapSphereOverChecker, &p.cpu_ids));
   double psnr = psnrFromMse(meanSquaredError(p.gpu, p.cpu, &p.cpu_ids));
   EXPECT_LT(psnr, 40.0) << "a probe cannot reproduce the parallax of a nearby floor exactly";
 }
@@ -103,7 +103,7 @@ TEST_F(BaselineImages, EnvmapBoxIsExactInAnEmptyBoxRoom) {
   Pair probe = renderBoth(scene, "envmap", size, settings);
   // Measured: 33.6 dB on reflector pixels (checker edges resampled through a 256^2 cube map)
   // against 16.6 dB for the uncorrected probe.
-  EXPECT_TRUE(psnrAtLeast(box.gpu, box.cpu, 28.0, &box.cpu_ids, "envmap-box-reflector"));
+  EXPECT_TRUE(psnrAtLeast(box.gpu, box.cpu, floors::kEnvmapBoxInBoxRoom, &box.cpu_ids));
   EXPECT_TRUE(
       mostPixelsWithin(box.gpu, box.cpu, 8.0f / 255.0f, 0.05, &box.cpu_ids, "envmap-box-within"));
   double corrected = psnrFromMse(meanSquaredError(box.gpu, box.cpu, &box.cpu_ids));

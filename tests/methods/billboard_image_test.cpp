@@ -29,7 +29,7 @@ TEST_F(BillboardImages, APlanarFloorIsExact) {
   // Measured under matched 2x2 sampling: 43.6 dB on reflector pixels (checker edges
   // resampled from 1024^2 texels; 37.1 dB at one sample a pixel); a mis-oriented or misplaced
   // billboard shifts whole cells.
-  EXPECT_TRUE(psnrAtLeast(p.gpu, p.cpu, 40.0, &p.cpu_ids, "billboard-floor-reflector"));
+  EXPECT_TRUE(psnrAtLeast(p.gpu, p.cpu, floors::kBillboardFloor, &p.cpu_ids));
   EXPECT_TRUE(mostPixelsWithin(p.gpu, p.cpu, 8.0f / 255.0f, 0.05, &p.cpu_ids, "billboard-floor"));
 }
 
@@ -48,8 +48,8 @@ TEST_F(BillboardImages, ApproximatesSpheres9BetterThanProbes) {
               reflectorPsnr(billboard), reflectorPsnr(probe));
   // Measured under matched 2x2 sampling: 22.3 dB (billboard) vs 15.1 dB (envmap) on reflector
   // pixels at this size (17.1 vs 14.0 at one sample a pixel, where aliasing hid half the gap).
-  EXPECT_TRUE(psnrAtLeast(billboard.gpu, billboard.cpu, 20.0, &billboard.cpu_ids,
-                          "billboard-spheres9-reflector"));
+  EXPECT_TRUE(
+      psnrAtLeast(billboard.gpu, billboard.cpu, floors::kBillboardSpheres9, &billboard.cpu_ids));
   EXPECT_GT(reflectorPsnr(billboard), reflectorPsnr(probe) + 5.0);
 }
 

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "support/depth_camera.h"
 #include "scene/builtin_scenes.h"
+#include "support/depth_camera.h"
 
 namespace mirage {
 namespace {

@@ -7,12 +7,12 @@
 
 #include <random>
 
-#include "support/depth_camera.h"
 #include "methods/depthmap/depthmap_set.h"
 #include "methods/depthmap/depthmap_shared.h"
 #include "methods/frame.h"
 #include "scene/builtin_scenes.h"
 #include "scene/procedural.h"
+#include "support/depth_camera.h"
 #include "support/gl_test.h"
 #include "support/image_check.h"
 #include "support/render_pair.h"
@@ -253,8 +253,7 @@ TEST_F(DepthMapImages, ReflectsCurvedObjectsBetterThanBillboards) {
               reflectorPsnr(board));
   // Measured at 360x256 under matched 2x2 sampling: 40.6 dB (depthmap) vs 26.5 dB (billboard)
   // (35.5 vs 26.0 at one sample a pixel).
-  EXPECT_TRUE(
-      psnrAtLeast(depth.gpu, depth.cpu, 37.0, &depth.cpu_ids, "depthmap-objects-reflector"));
+  EXPECT_TRUE(psnrAtLeast(depth.gpu, depth.cpu, floors::kDepthmapObjects, &depth.cpu_ids));
   EXPECT_GT(reflectorPsnr(depth), reflectorPsnr(board) + 10.0);
 }
 
@@ -275,7 +274,7 @@ TEST_F(DepthMapImages, SrdmSearchMatchesTheFullMapWalk) {
   const RenderedFrame b = renderer.read();
   const Image da = displayed(a.color), db = displayed(b.color);
   // Measured: 39.0 dB.
-  EXPECT_TRUE(psnrAtLeast(da, db, 35.0, &a.ids, "depthmap-srdm-vs-linear"));
+  EXPECT_TRUE(psnrAtLeast(da, db, floors::kDepthmapSrdmVsLinear, &a.ids));
 }
 
 TEST_F(DepthMapImages, TwoRowsRecoverCoarseAngularSteps) {
@@ -363,7 +362,7 @@ TEST_F(DepthMapImages, SelfMapsReflectAConcaveReflectorInItself) {
   // Measured: 1,723 pixels, 11.65 -> 14.19 dB there; reflector pixels 18.38 -> 18.79 dB.
   EXPECT_GT(after, before + 1.5);
   EXPECT_GT(reflectorPsnr(self), reflectorPsnr(none) + 0.2);
-  EXPECT_TRUE(psnrAtLeast(self.gpu, self.cpu, 17.5, &self.cpu_ids, "depthmap-self-maps"));
+  EXPECT_TRUE(psnrAtLeast(self.gpu, self.cpu, floors::kDepthmapSelfMaps, &self.cpu_ids));
 }
 
 TEST_F(DepthMapImages, RigidMotionRebuildsNothingAndStaysCorrect) {
@@ -405,8 +404,8 @@ TEST_F(DepthMapImages, RigidMotionRebuildsNothingAndStaysCorrect) {
   const Image moved = displayed(renderer.read().color);
   RenderPair fresh = renderWithTruth(scene, "depthmap", size, settings, {}, 2.0f);
   // Measured: identical (the maps are the same in the object's space); 33.1 dB to the truth.
-  EXPECT_TRUE(psnrAtLeast(moved, fresh.gpu, 45.0, &fresh.cpu_ids, "depthmap-moved-vs-fresh"));
-  EXPECT_TRUE(psnrAtLeast(moved, fresh.cpu, 30.0, &fresh.cpu_ids, "depthmap-moved-vs-truth"));
+  EXPECT_TRUE(psnrAtLeast(moved, fresh.gpu, floors::kDepthmapMovedVsFresh, &fresh.cpu_ids));
+  EXPECT_TRUE(psnrAtLeast(moved, fresh.cpu, floors::kDepthmapMovedVsTruth, &fresh.cpu_ids));
 }
 
 TEST(DepthMapCli, BadParametersExitWithTheAllowedRange) {

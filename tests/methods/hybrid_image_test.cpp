@@ -35,7 +35,7 @@ TEST_F(HybridImages, ReflectsNearbyObjectsBetterThanEnvironmentMaps) {
   // Measured at 360x256 with 400,000 points under matched 2x2 sampling: 33.0 dB (hybrid) vs
   // 21.4 dB (envmap) (30.6 vs 21.4 at one sample a pixel; splats sized in whole output pixels, as
   // at native resolution).
-  EXPECT_TRUE(psnrAtLeast(hybrid.gpu, hybrid.cpu, 31.0, &hybrid.cpu_ids, "hybrid-objects"));
+  EXPECT_TRUE(psnrAtLeast(hybrid.gpu, hybrid.cpu, floors::kHybridObjects, &hybrid.cpu_ids));
   EXPECT_GT(reflectorPsnr(hybrid), reflectorPsnr(envmap) + 10.0);
 }
 
@@ -139,7 +139,7 @@ TEST_F(HybridImages, RigidMotionKeepsTheTreesAndStaysCorrect) {
   RenderPair fresh = renderWithTruth(scene, "hybrid", size, settings, kDense, 1.0f);
   EXPECT_EQ(differingPixels(after, fresh.gpu), 0u) << "equal to a fresh build at t = 1";
   // Measured: 27.9 dB.
-  EXPECT_TRUE(psnrAtLeast(after, fresh.cpu, 26.0, &fresh.cpu_ids, "hybrid-moved-vs-truth"));
+  EXPECT_TRUE(psnrAtLeast(after, fresh.cpu, floors::kHybridMovedVsTruth, &fresh.cpu_ids));
 }
 
 // Points of closed objects that face away from a whole reflector triangle are skipped before
@@ -188,7 +188,7 @@ TEST_F(HybridImages, NoPointSampledObjectsShowsTheBackgroundOnly) {
   EXPECT_EQ(stats.at("points"), 0.0);
   EXPECT_EQ(stats.at("splats_written"), 0.0);
   RenderPair truth = renderWithTruth(scene, "hybrid", size, FrameSettings{1, true});
-  EXPECT_TRUE(psnrAtLeast(truth.gpu, truth.cpu, 35.0, &truth.cpu_ids, "hybrid-sky-only"));
+  EXPECT_TRUE(psnrAtLeast(truth.gpu, truth.cpu, floors::kHybridSkyOnly, &truth.cpu_ids));
 }
 
 // The coarse concave dish: its large C3RCs converge and then diverge, so near the eye's caustic
@@ -241,7 +241,7 @@ TEST_F(HybridImages, LevelOfDetailProjectsFewerPointsAndStaysClose) {
   RenderPair pair = renderWithTruth(scene, "hybrid", size, settings, params);
   std::printf("reflector PSNR with --hybrid-lod 16: %.2f dB\n", reflectorPsnr(pair));
   // Measured at 360x256 with 400,000 points: 29.3 dB (30.6 dB with every point).
-  EXPECT_TRUE(psnrAtLeast(pair.gpu, pair.cpu, 28.5, &pair.cpu_ids, "hybrid-lod"));
+  EXPECT_TRUE(psnrAtLeast(pair.gpu, pair.cpu, floors::kHybridLod, &pair.cpu_ids));
 }
 
 TEST(HybridCli, BadParametersExitWithTheAllowedRange) {

@@ -32,8 +32,8 @@ TEST_F(PlanarImages, MirrorRoomIsExact) {
   std::printf("mirror-room reflector PSNR: %.2f dB\n", reflectorPsnr(p));
   // Measured under matched 2x2 sampling: 66.1 dB on the mirror (float rounding between the
   // rasteriser and Embree at a few sub-pixels); exact is 60 dB or more.
-  EXPECT_GE(reflectorPsnr(p), 60.0);
-  EXPECT_TRUE(psnrAtLeast(p.gpu, p.cpu, 60.0, nullptr, "planar-mirror-room"));
+  EXPECT_TRUE(meetsFloor(reflectorPsnr(p), floors::kPlanarMirrorRoomReflector));
+  EXPECT_TRUE(psnrAtLeast(p.gpu, p.cpu, floors::kPlanarMirrorRoom, nullptr));
 }
 
 // Two facing mirrors: each order adds the mirror seen in the other mirror.
@@ -46,7 +46,8 @@ TEST_F(PlanarImages, MirrorsInMirrorsRecurseToTheOrder) {
     std::printf("two-mirrors order %d: reflector PSNR %.2f dB\n", order, reflectorPsnr(p));
     // Measured under matched 2x2 sampling: 48.8, 48.7 and 48.4 dB (the mirrors' frames meet
     // the glass at grazing angles, where a few sub-pixels fall to the other side).
-    EXPECT_GE(reflectorPsnr(p), 45.0) << "order " << order;
+    EXPECT_TRUE(meetsFloor(reflectorPsnr(p), floors::kPlanarTwoMirrorsByOrder))
+        << "order " << order;
   }
   // One mirrored view per visible mirror, then one per mirror seen in it, and so on.
   const double order1 = statsOf(scene, {160, 120}, 1).at("mirrored_views");
@@ -64,7 +65,7 @@ TEST_F(PlanarImages, ReflectorsThatAreNotPlanarShowTheirBaseColour) {
   settings.order = 1;
   RenderPair planar = renderWithTruth(scene, "planar", {160, 120}, settings);
   RenderPair none = renderWithTruth(scene, "none", {160, 120}, settings);
-  EXPECT_TRUE(psnrAtLeast(planar.gpu, none.gpu, 60.0, nullptr, "planar-not-planar"));
+  EXPECT_TRUE(psnrAtLeast(planar.gpu, none.gpu, floors::kPlanarNotPlanar, nullptr));
 }
 
 }  // namespace

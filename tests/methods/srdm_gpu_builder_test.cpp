@@ -10,10 +10,10 @@
 #include <string>
 
 #include "core/error.h"
-#include "support/depth_camera.h"
 #include "methods/depthmap/srdm.h"
 #include "methods/depthmap/srdm_gpu_builder.h"
 #include "scene/builtin_scenes.h"
+#include "support/depth_camera.h"
 #include "support/depth_maps.h"
 #include "support/gl_test.h"
 

@@ -104,7 +104,7 @@ TEST_F(SsrGpu, MatchesTheRayTracerWhereEveryReflectedPointIsOnScreen) {
   // by more than 0.02 at one sample a pixel): the error is on the checker's edges, which the
   // hit's colour, read between the direct view's pixels, blurs; everywhere else the reflection is
   // the ray tracer's.
-  EXPECT_TRUE(psnrAtLeast(f.gpu, f.cpu, 32.0, &f.cpu_ids, "ssr-on-screen"));
+  EXPECT_TRUE(psnrAtLeast(f.gpu, f.cpu, floors::kSsrOnScreen, &f.cpu_ids));
   EXPECT_TRUE(mostPixelsWithin(f.gpu, f.cpu, 0.02f, 0.07, &f.cpu_ids, "ssr-on-screen-pixels"));
 }
 

@@ -32,7 +32,8 @@ TEST_F(SupersampleImages, PlaneMirrorIsExactUnderMatchedSampling) {
     ASSERT_GT(countNonZero(p.cpu_ids), 1000u);
     std::printf("planar vs ray tracer at --ssaa %d: reflector PSNR %.2f dB\n", n, reflectorPsnr(p));
     // Exact but for float rounding between the rasteriser and Embree (measured 66-75 dB).
-    EXPECT_TRUE(psnrAtLeast(p.gpu, p.cpu, 60.0, &p.cpu_ids, "ssaa-planar-" + std::to_string(n)))
+    EXPECT_TRUE(psnrAtLeast(p.gpu, p.cpu, floors::kSsaaPlanar, &p.cpu_ids,
+                            "ssaa-planar-" + std::to_string(n)))
         << "--ssaa " << n;
   }
   // The same 4x4 planar frame against a reference sampled otherwise (the pixel centre, or a

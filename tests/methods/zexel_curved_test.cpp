@@ -218,7 +218,7 @@ TEST_F(ZexelCurvedImages, CurvedMirrorShowsParallaxBetterThanEnvironmentMaps) {
   // Measured under matched 2x2 sampling: 25.4 dB against 13.0 (base colour 5.4; 20.8 against
   // 12.9 at one sample a pixel).
   EXPECT_GT(reflectorPsnr(zexel), reflectorPsnr(envmap) + 10.0);
-  EXPECT_GT(reflectorPsnr(zexel), 23.0);
+  EXPECT_TRUE(meetsFloor(reflectorPsnr(zexel), floors::kZexelCurved));
   // Every pixel of the sphere is shaded by the inverse warp: the base-colour pass drawn after it
   // fails the depth test there (one invariant vertex shader), so none shows the base frame's value.
   const std::vector<bool> changed = changedPixels(base.gpu, zexel.gpu);

@@ -1,6 +1,8 @@
 #include "support/image_check.h"
 
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 
 #include <fmt/format.h>
 
@@ -26,6 +28,40 @@ std::string writeArtifacts(const Image& actual, const Image& expected, const std
   return ::testing::AssertionFailure()
          << tag << ": PSNR " << psnr << " dB < " << min_psnr << " dB; images in "
          << writeArtifacts(actual, expected, tag);
+}
+
+namespace {
+
+// One line per floor check in $MIRAGE_PSNR_LOG: test, floor, measured, floor dB, measured here.
+void logFloor(double psnr, const PsnrFloor& floor) {
+  const char* path = std::getenv("MIRAGE_PSNR_LOG");
+  if (!path || !*path) return;
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::ofstream out(path, std::ios::app);
+  out << (info ? fmt::format("{}.{}", info->test_suite_name(), info->name()) : "test") << '\t'
+      << floor.name << '\t'
+      << fmt::format("{:.2f}\t{:.2f}\t{:.2f}", psnr, floor.floor, floor.measured) << '\n';
+}
+
+}  // namespace
+
+::testing::AssertionResult meetsFloor(double psnr, const PsnrFloor& floor) {
+  logFloor(psnr, floor);
+  if (psnr >= floor.floor)
+    return ::testing::AssertionSuccess() << floor.name << ": PSNR " << psnr << " dB";
+  return ::testing::AssertionFailure()
+         << floor.name << ": PSNR " << psnr << " dB < its floor " << floor.floor << " dB (measured "
+         << floor.measured << " dB on the platform of support/psnr_floors.h)";
+}
+
+::testing::AssertionResult psnrAtLeast(const Image& actual, const Image& expected,
+                                       const PsnrFloor& floor, const IdImage* mask,
+                                       const std::string& tag) {
+  const double psnr = psnrFromMse(meanSquaredError(actual, expected, mask));
+  ::testing::AssertionResult result = meetsFloor(psnr, floor);
+  if (!result)
+    result << "; images in " << writeArtifacts(actual, expected, tag.empty() ? floor.name : tag);
+  return result;
 }
 
 ::testing::AssertionResult mostPixelsWithin(const Image& actual, const Image& expected,

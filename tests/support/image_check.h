@@ -9,6 +9,7 @@
 
 #include "core/image.h"
 #include "eval/metrics.h"
+#include "support/psnr_floors.h"
 
 namespace mirage::test {
 
@@ -19,6 +20,15 @@ std::string writeArtifacts(const Image& actual, const Image& expected, const std
 // Passes when PSNR (over the mask's pixels, or all pixels) is at least `min_psnr` dB.
 ::testing::AssertionResult psnrAtLeast(const Image& actual, const Image& expected, double min_psnr,
                                        const IdImage* mask, const std::string& tag);
+
+// Passes when the PSNR meets the floor (support/psnr_floors.h), and with MIRAGE_PSNR_LOG set
+// appends the measurement to that file. `tag` (default: the floor's name) names the images
+// written on failure.
+::testing::AssertionResult psnrAtLeast(const Image& actual, const Image& expected,
+                                       const PsnrFloor& floor, const IdImage* mask,
+                                       const std::string& tag = "");
+// The same for a PSNR measured by the caller (no images to write).
+::testing::AssertionResult meetsFloor(double psnr, const PsnrFloor& floor);
 
 // Passes when at most `max_fraction` of the (masked) pixels differ by more than `tolerance` in
 // any channel.
