@@ -27,30 +27,24 @@ void addSceneOptions(CLI::App* app, SceneArgs& args) {
                   "`mirage view` records them) to use instead of the scene's cameras");
   args.time_option =
       app->add_option("--time", args.time, "scene time in seconds (animated scenes, camera paths)");
-  app->add_option("--max-memory", args.max_memory,
-                  "what one input file (mesh, image, compressed stream) may make mirage allocate, "
-                  "checked from its header before reading (1M..1T, e.g. 512M, 4G)")
-      ->capture_default_str();
+  addDefaulted(app, "--max-memory", args.max_memory,
+               "what one input file (mesh, image, compressed stream) may make mirage allocate, "
+               "checked from its header before reading (1M..1T, e.g. 512M, 4G)");
 }
 
 void addFrameOptions(CLI::App* app, FrameArgs& args) {
-  app->add_option("--size", args.size, "image size WxH (1..16384 each)")->capture_default_str();
-  app->add_option("--order", args.order,
-                  fmt::format("reflection order K (0..{}; 0 = no reflections)", kMaxOrder))
-      ->capture_default_str();
-  app->add_option("--mip", args.mip, "mip-mapped reflection lookups: on|off")
-      ->capture_default_str();
-  app->add_option("--exposure", args.exposure, "exposure multiplier before tone mapping (> 0)")
-      ->capture_default_str();
-  app->add_option("--tonemap", args.tonemap, "tone map: clamp|reinhard|aces")
-      ->capture_default_str();
+  addDefaulted(app, "--size", args.size, "image size WxH (1..16384 each)");
+  addDefaulted(app, "--order", args.order,
+               fmt::format("reflection order K (0..{}; 0 = no reflections)", kMaxOrder));
+  addDefaulted(app, "--mip", args.mip, "mip-mapped reflection lookups: on|off");
+  addDefaulted(app, "--exposure", args.exposure, "exposure multiplier before tone mapping (> 0)");
+  addDefaulted(app, "--tonemap", args.tonemap, "tone map: clamp|reinhard|aces");
 }
 
 void addSsaaOption(CLI::App* app, FrameArgs& args) {
-  app->add_option("--ssaa", args.ssaa,
-                  "supersampling: render N x N sub-pixels per output pixel and box-filter them "
-                  "in linear radiance; the ray tracer traces the same sub-pixel positions (1..8)")
-      ->capture_default_str();
+  addDefaulted(app, "--ssaa", args.ssaa,
+               "supersampling: render N x N sub-pixels per output pixel and box-filter them "
+               "in linear radiance; the ray tracer traces the same sub-pixel positions (1..8)");
 }
 
 void addMethodParamOptions(CLI::App* app, std::map<std::string, std::string>& values) {

@@ -43,6 +43,13 @@ struct RenderingArgs {
   std::map<std::string, std::string> params;  // method parameters given, by name
 };
 
+// An option whose default --help shows.
+template <typename T>
+CLI::Option* addDefaulted(CLI::App* app, const std::string& name, T& value,
+                          const std::string& help) {
+  return app->add_option(name, value, help)->capture_default_str();
+}
+
 void addSceneOptions(CLI::App* app, SceneArgs& args);
 void addFrameOptions(CLI::App* app, FrameArgs& args);
 // --ssaa N (1..8) for the commands that measure or show quality (bench times the output size).

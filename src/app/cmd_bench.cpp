@@ -306,21 +306,14 @@ Command addBenchCommand(CLI::App& parent) {
   std::shared_ptr<BenchArgs> args;
   Command cmd = renderingCommand(parent, "bench",
                                  "time several methods on the same frames, in one run", args);
-  cmd.app->add_option("--methods", args->methods, "all, or a comma-separated list of methods")
-      ->capture_default_str();
-  cmd.app->add_option("--frames", args->frames, "timed frames per method (1..1000000)")
-      ->capture_default_str();
-  cmd.app->add_option("--warmup", args->warmup, "untimed frames per method first (0..100000)")
-      ->capture_default_str();
-  cmd.app
-      ->add_option("--fps", args->fps,
-                   "play the scene: timed frame i at --time + (i + 1) / fps, after warm-up frames "
-                   "at --time (0..1000; 0: every frame at --time, a still scene)")
-      ->capture_default_str();
-  cmd.app
-      ->add_option("--raytrace-budget", args->raytrace_budget_s,
-                   "seconds the CPU ray tracer may spend on its timed frames (at least 3 frames)")
-      ->capture_default_str();
+  addDefaulted(cmd.app, "--methods", args->methods, "all, or a comma-separated list of methods");
+  addDefaulted(cmd.app, "--frames", args->frames, "timed frames per method (1..1000000)");
+  addDefaulted(cmd.app, "--warmup", args->warmup, "untimed frames per method first (0..100000)");
+  addDefaulted(cmd.app, "--fps", args->fps,
+               "play the scene: timed frame i at --time + (i + 1) / fps, after warm-up frames "
+               "at --time (0..1000; 0: every frame at --time, a still scene)");
+  addDefaulted(cmd.app, "--raytrace-budget", args->raytrace_budget_s,
+               "seconds the CPU ray tracer may spend on its timed frames (at least 3 frames)");
   addFrameOptions(cmd.app, args->frame);
   cmd.app->add_option("--json", args->json, "output JSON file")->required();
   addMethodParamOptions(cmd.app, args->params);

@@ -238,37 +238,26 @@ Command addCompareCommand(CLI::App& parent) {
   args->time_option = cmd.app->get_option("--time");
   std::string names;
   for (const std::string& n : methodNames()) names += (names.empty() ? "" : ",") + n;
-  cmd.app->add_option("--methods", args->methods, "all, or a comma-separated list of: " + names)
-      ->capture_default_str();
-  cmd.app
-      ->add_option("--reference", args->reference,
-                   "the method the others are measured against (e.g. planar: exact for planar "
-                   "mirrors, and much faster than the ray tracer along a path)")
-      ->capture_default_str();
-  cmd.app
-      ->add_option("--path-frames", args->path_frames,
-                   "render N frames along the camera's path (--camera; equal steps from its first "
-                   "key to its last), each method keeping its state from frame to frame; 0: one "
-                   "view at --time (0..100000)")
-      ->capture_default_str();
+  addDefaulted(cmd.app, "--methods", args->methods, "all, or a comma-separated list of: " + names);
+  addDefaulted(cmd.app, "--reference", args->reference,
+               "the method the others are measured against (e.g. planar: exact for planar "
+               "mirrors, and much faster than the ray tracer along a path)");
+  addDefaulted(cmd.app, "--path-frames", args->path_frames,
+               "render N frames along the camera's path (--camera; equal steps from its first "
+               "key to its last), each method keeping its state from frame to frame; 0: one "
+               "view at --time (0..100000)");
   addFrameOptions(cmd.app, args->frame);
   args->frame.ssaa = 4;  // quality is measured with matched supersampling unless told otherwise
   addSsaaOption(cmd.app, args->frame);
-  cmd.app
-      ->add_option("--reference-check", args->reference_check,
-                   "also render a converged reference (--reference-spp stratified samples a "
-                   "pixel) and report how far the matched reference is from it: auto (on when "
-                   "the reference is the ray tracer), on, off")
-      ->capture_default_str();
-  cmd.app
-      ->add_option("--reference-spp", args->reference_spp,
-                   "samples per pixel of the converged reference (1..4096)")
-      ->capture_default_str();
+  addDefaulted(cmd.app, "--reference-check", args->reference_check,
+               "also render a converged reference (--reference-spp stratified samples a "
+               "pixel) and report how far the matched reference is from it: auto (on when "
+               "the reference is the ray tracer), on, off");
+  addDefaulted(cmd.app, "--reference-spp", args->reference_spp,
+               "samples per pixel of the converged reference (1..4096)");
   cmd.app->add_option("-o,--output", args->output, "report directory")->required();
-  cmd.app
-      ->add_option("--heatmap-max", args->heatmap_max,
-                   "error shown as the brightest heat-map colour (display units, > 0)")
-      ->capture_default_str();
+  addDefaulted(cmd.app, "--heatmap-max", args->heatmap_max,
+               "error shown as the brightest heat-map colour (display units, > 0)");
   addMethodParamOptions(cmd.app, args->params);
   cmd.run = [args] { return runCompare(*args); };
   return cmd;

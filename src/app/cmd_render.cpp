@@ -134,12 +134,9 @@ Command addRenderCommand(CLI::App& parent) {
                    "output image: .png (display) or .exr (linear); with --frames N > 1 frame "
                    "i goes to <name>_<i>.<ext>, or all of them into one .mp4 (needs ffmpeg)")
       ->required();
-  cmd.app
-      ->add_option("--frames", args->frames,
-                   "render N frames (1..100000), frame i at --time + i / --fps")
-      ->capture_default_str();
-  cmd.app->add_option("--fps", args->fps, "frames per second of a sequence (0..1000]")
-      ->capture_default_str();
+  addDefaulted(cmd.app, "--frames", args->frames,
+               "render N frames (1..100000), frame i at --time + i / --fps");
+  addDefaulted(cmd.app, "--fps", args->fps, "frames per second of a sequence (0..1000]");
   addMethodParamOptions(cmd.app, args->params);
   cmd.run = [args] { return runRender(*args); };
   return cmd;

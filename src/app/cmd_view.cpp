@@ -115,7 +115,7 @@ Command addViewCommand(CLI::App& parent) {
       "the interactive viewer: any method, live parameters, fly/orbit camera, scene time, the "
       "ray-traced ground truth beside the frame",
       args);
-  cmd.app->add_option("--method", args->method, "the method shown first")->capture_default_str();
+  addDefaulted(cmd.app, "--method", args->method, "the method shown first");
   addFrameOptions(cmd.app, args->frame);
   addSsaaOption(cmd.app, args->frame);
   cmd.app->add_flag("--pause", args->pause, "start with the scene's time stopped");
@@ -131,13 +131,10 @@ Command addViewCommand(CLI::App& parent) {
                       "where F12 writes screenshots and P camera paths (default: next to the "
                       "scene file, or the current folder)");
   for (const PathOption& o : kPathOptions) cmd.app->add_option(o.name, (*args).*o.field, o.help);
-  cmd.app->add_option("--truth", args->truth, "the ground truth at the start: off|split|flip")
-      ->capture_default_str();
+  addDefaulted(cmd.app, "--truth", args->truth, "the ground truth at the start: off|split|flip");
   cmd.app->add_flag("--heatmap", args->heatmap, "start with the error heat map on");
-  cmd.app
-      ->add_option("--truth-resolution", args->truth_divisor,
-                   "the reference's resolution, 1/n of the frame's (1..8)")
-      ->capture_default_str();
+  addDefaulted(cmd.app, "--truth-resolution", args->truth_divisor,
+               "the reference's resolution, 1/n of the frame's (1..8)");
   cmd.app->add_flag("--no-vsync", args->no_vsync, "render as fast as possible");
   addMethodParamOptions(cmd.app, args->params);
   cmd.run = [args] { return runView(*args); };

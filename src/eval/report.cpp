@@ -240,8 +240,7 @@ const Column kColumns[] = {
      [](const MethodReport& m) { return m.metrics.flip_reflector; }},
     {"ms", "one steady frame; lower is better", "{:.2f}", false,
      [](const MethodReport& m) { return m.ms; }},
-    {"first frame ms", "captures and builds included; lower is better", "{:.2f}", false,
-     [](const MethodReport& m) { return m.first_ms; }},
+    kFirstFrameColumn,
 };
 
 std::string methodFigures(const CompareReport& r, const MethodReport& m, const MethodReport* ref) {

@@ -36,6 +36,11 @@ struct Column {
   double (*get)(const MethodReport&);
 };
 
+// The first frame's time (captures and builds), a column of both pages' tables.
+inline constexpr Column kFirstFrameColumn{"first frame ms",
+                                          "captures and builds included; lower is better", "{:.2f}",
+                                          false, [](const MethodReport& m) { return m.first_ms; }};
+
 bool isReference(const CompareReport& r, const MethodReport& m);
 // The best value of a column among the methods other than the reference (NaN if none).
 double bestOf(const CompareReport& r, const Column& c);

@@ -127,8 +127,7 @@ const Column kPathColumns[] = {
      [](const MethodReport& m) { return m.metrics.psnr; }},
     {"ms", "mean frame after the first; lower is better", "{:.2f}", false,
      [](const MethodReport& m) { return m.ms; }},
-    {"first frame ms", "captures and builds included; lower is better", "{:.2f}", false,
-     [](const MethodReport& m) { return m.first_ms; }},
+    kFirstFrameColumn,
 };
 
 // The reflector PSNR of every method frame by frame (all pixels in the cell's tooltip).

@@ -81,7 +81,13 @@ class Method {
  public:
   virtual ~Method() = default;
 
-  virtual const MethodInfo& info() const = 0;
+  // The registry's entry of the method, attached by factoryOf as it makes the method (not yet
+  // there while the method's constructor runs).
+  virtual const MethodInfo& info() const {
+    MIRAGE_CHECK(info_ != nullptr);  // made by its entry's factory (factoryOf)
+    return *info_;
+  }
+  void attachInfo(const MethodInfo& info) { info_ = &info; }
   // Brings captures and builds up to date with the scene at gpu.time(): rebuild only what
   // changed since the last call (a camera move alone changes nothing a method captures).
   virtual void update(FrameContext& frame) = 0;
@@ -96,6 +102,9 @@ class Method {
   // Why `envmap` draws in this method's place (the driver refused it: methods/method_guard.h),
   // or empty.
   virtual std::string fallbackReason() const { return {}; }
+
+ private:
+  const MethodInfo* info_ = nullptr;
 };
 
 using MethodFactory = std::function<std::unique_ptr<Method>(const MethodSetup&)>;
@@ -109,7 +118,9 @@ struct MethodEntry {
 template <class M, class... Extra>
 MethodFactory factoryOf(Extra... extra) {
   return [=](const MethodSetup& setup) -> std::unique_ptr<Method> {
-    return std::make_unique<M>(setup, extra...);
+    std::unique_ptr<Method> method = std::make_unique<M>(setup, extra...);
+    method->attachInfo(setup.info);
+    return method;
   };
 }
 

@@ -6,13 +6,23 @@
 
 namespace mirage {
 
+namespace {
+
+// Runs `attempt`; where the driver refuses it (a GpuError), `recover` gets the error.
+template <typename Attempt, typename Recover>
+void orRecover(Attempt&& attempt, Recover&& recover) {
+  try {
+    attempt();
+  } catch (const GpuError& e) {
+    recover(e);
+  }
+}
+
+}  // namespace
+
 MethodGuard::MethodGuard(std::string requested, const Factory& make, Factory fallback)
     : requested_(std::move(requested)), fallback_(std::move(fallback)) {
-  try {
-    current_ = make();
-  } catch (const GpuError& e) {
-    fallBack(e);
-  }
+  orRecover([&] { current_ = make(); }, [&](const GpuError& e) { fallBack(e); });
 }
 
 void MethodGuard::fallBack(const GpuError& error) {
@@ -23,33 +33,27 @@ void MethodGuard::fallBack(const GpuError& error) {
   spdlog::warn("method '{}' cannot run on this OpenGL driver: {}; drawing with 'envmap' instead",
                requested_, reason_);
   current_.reset();  // its GL objects go before envmap makes its own
-  try {
-    current_ = fallback_();
-  } catch (const GpuError& e) {
-    fallBack(e);
-  }
+  orRecover([&] { current_ = fallback_(); }, [&](const GpuError& e) { fallBack(e); });
 }
 
 void MethodGuard::update(FrameContext& frame) {
-  try {
-    current_->update(frame);
-  } catch (const GpuError& e) {
-    fallBack(e);
-    current_->update(frame);
-  }
+  orRecover([&] { current_->update(frame); },
+            [&](const GpuError& e) {
+              fallBack(e);
+              current_->update(frame);
+            });
 }
 
 void MethodGuard::render(FrameContext& frame) {
-  try {
-    current_->render(frame);
-  } catch (const GpuError& e) {
-    fallBack(e);
-    // The refused method may have drawn part of the frame: start it again, with envmap's
-    // captures made first.
-    current_->update(frame);
-    frame.beginDrawing();
-    current_->render(frame);
-  }
+  orRecover([&] { current_->render(frame); },
+            [&](const GpuError& e) {
+              fallBack(e);
+              // The refused method may have drawn part of the frame: start it again, with
+              // envmap's captures made first.
+              current_->update(frame);
+              frame.beginDrawing();
+              current_->render(frame);
+            });
 }
 
 }  // namespace mirage

@@ -57,7 +57,7 @@ Animation periodic(float period, At at) {
   return a;
 }
 
-Scene sphereOverChecker() {
+Scene sphereOverChecker(const SceneOptions&) {
   Scene s;
   addCheckerFloor(s, 16.0f);
   addBox(s, "red-box", {2.6f, 0.5f, 0.8f}, vec3(0.5f), {0.85f, 0.18f, 0.12f}, 20.0f);
@@ -108,7 +108,7 @@ Scene spheres9(const SceneOptions& options) {
 
 // The depth-map impostors' test scene: curved, concave diffuse objects (a teapot, a torus with a
 // hole to see through) reflected in a mirror sphere, on a checkerboard.
-Scene teapotSphere() {
+Scene teapotSphere(const SceneOptions&) {
   Scene s;
   addCheckerFloor(s, 16.0f);
   int teapot = addMesh(s, procedural::teapotLike());
@@ -126,7 +126,7 @@ Scene teapotSphere() {
   return s;
 }
 
-Scene mirrorTorus() {
+Scene mirrorTorus(const SceneOptions&) {
   Scene s;
   addCheckerFloor(s, 16.0f);
   addObject(s, "teapot", procedural::teapotLike(),
@@ -138,7 +138,7 @@ Scene mirrorTorus() {
   return s;
 }
 
-Scene mirrorRoom() {
+Scene mirrorRoom(const SceneOptions&) {
   Scene s;
   int room = addMesh(s, procedural::box({4.0f, 2.0f, 4.0f}, true));
   int walls = addMaterial(s, Material::checker("walls", kCheckerLight, {0.25f, 0.35f, 0.6f}, 1.0f));
@@ -183,7 +183,7 @@ Scene mirrorRoom() {
   return s;
 }
 
-Scene twoMirrors() {
+Scene twoMirrors(const SceneOptions&) {
   Scene s;
   addCheckerFloor(s, 16.0f);
   int mirror_mesh = addMesh(s, procedural::quad(7.0f, 2.6f));
@@ -251,7 +251,7 @@ quat alongDirection(vec3 direction) {
 
 // The hybrid paper's glass (its Figure 3): a goblet-shaped mirror whose concave bowl shows the
 // objects around it inverted and doubled, and a straw that intersects the reflector (Figure 2).
-Scene glass() {
+Scene glass(const SceneOptions&) {
   Scene s;
   addCheckerFloor(s, 16.0f);
   int goblet = addMesh(s, procedural::lathe(gobletProfile(), 80));
@@ -279,7 +279,7 @@ Scene glass() {
 // A coarse concave mirror (a spherical cap of radius 1 in ten segments and five rings, smooth
 // normals) with a ball near the eye's caustic: its reflector triangles are large C3RCs that
 // converge and then diverge, where one C3RC projects a point twice (the hybrid paper's Figure 3).
-Scene concaveDish() {
+Scene concaveDish(const SceneOptions&) {
   Scene s;
   std::vector<vec2> profile;  // rim to axis, so that the normals face into the dish
   for (int i = 5; i >= 0; --i) {
@@ -295,7 +295,7 @@ Scene concaveDish() {
 
 // A rippling mirror pool: a 4 x 3 mirror grid just above a checkerboard, waves running out from
 // a point near one end (a deforming reflector), with coloured objects around its rim.
-Scene ripplePool() {
+Scene ripplePool(const SceneOptions&) {
   Scene s;
   addCheckerFloor(s, 16.0f);
   const int pool_instance =
@@ -376,35 +376,35 @@ struct BuiltinMaker {
 constexpr BuiltinMaker kBuiltins[] = {
     {"sphere-over-checker",
      "one mirror sphere over a checkerboard floor with coloured boxes around it",
-     [](const SceneOptions&) { return sphereOverChecker(); }},
+     sphereOverChecker},
     {"spheres9", "a 3x3 grid of mirror spheres among diffuse objects (--reflectors N keeps N)",
-     [](const SceneOptions& o) { return spheres9(o); }},
+     spheres9},
     {"mirror-room",
      "a checkerboard room with one planar wall mirror, a teapot-like object on an "
      "inverted pyramid and a box",
-     [](const SceneOptions&) { return mirrorRoom(); }},
+     mirrorRoom},
     {"two-mirrors",
      "two facing planar mirrors with objects between them (reflections of every order)",
-     [](const SceneOptions&) { return twoMirrors(); }},
+     twoMirrors},
     {"teapot-sphere",
      "a teapot and a standing torus reflected in a mirror sphere on a checkerboard (depth maps)",
-     [](const SceneOptions&) { return teapotSphere(); }},
+     teapotSphere},
     {"mirror-torus",
      "a standing mirror torus beside a teapot on a checkerboard, seen into its hole: the inner "
      "surface reflects itself (self-reflections)",
-     [](const SceneOptions&) { return mirrorTorus(); }},
+     mirrorTorus},
     {"glass",
      "a mirror goblet on a checkerboard with coloured objects around it and a straw through its "
      "rim: the concave bowl shows them inverted and doubled (the hybrid paper's glass)",
-     [](const SceneOptions&) { return glass(); }},
+     glass},
     {"concave-dish",
      "a coarse concave mirror dish with a ball near its focus: large convergent-then-divergent "
      "C3RCs, the case for a second projection inside one C3RC (hybrid paper, Figure 3)",
-     [](const SceneOptions&) { return concaveDish(); }},
+     concaveDish},
     {"ripple-pool",
      "a rippling mirror pool on a checkerboard with objects around it: a deforming reflector "
      "(waves from a point, 2.5 s period)",
-     [](const SceneOptions&) { return ripplePool(); }},
+     ripplePool},
 };
 
 const BuiltinMaker* findBuiltin(const std::string& name) {

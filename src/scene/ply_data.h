@@ -137,25 +137,7 @@ class BinaryReader {
   void beginElement() {}
   void endElement() {}
   double real(Type t) {
-    switch (t) {
-      case Type::kInt8:
-        return load<int8_t>();
-      case Type::kUint8:
-        return load<uint8_t>();
-      case Type::kInt16:
-        return load<int16_t>();
-      case Type::kUint16:
-        return load<uint16_t>();
-      case Type::kInt32:
-        return load<int32_t>();
-      case Type::kUint32:
-        return load<uint32_t>();
-      case Type::kFloat32:
-        return load<float>();
-      case Type::kFloat64:
-        return load<double>();
-    }
-    return 0;
+    return visitType(t, [this](auto v) { return double(load<decltype(v)>()); });
   }
   int64_t integer(Type t) { return wholeNumber(*this, real(t)); }
   void skip(Type t) { skipBytes(typeSize(t)); }

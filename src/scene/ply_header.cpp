@@ -4,6 +4,7 @@
 #include <charconv>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "core/error.h"
@@ -85,25 +86,11 @@ bool isText(std::string_view line) {
 }  // namespace
 
 size_t typeSize(Type t) {
-  switch (t) {
-    case Type::kInt8:
-    case Type::kUint8:
-      return 1;
-    case Type::kInt16:
-    case Type::kUint16:
-      return 2;
-    case Type::kInt32:
-    case Type::kUint32:
-    case Type::kFloat32:
-      return 4;
-    case Type::kFloat64:
-      return 8;
-  }
-  return 0;
+  return visitType(t, [](auto v) { return sizeof(v); });
 }
 
 bool isInteger(Type t) {
-  return t != Type::kFloat32 && t != Type::kFloat64;
+  return visitType(t, [](auto v) { return std::is_integral_v<decltype(v)>; });
 }
 
 int Element::find(std::string_view property) const {

@@ -6,11 +6,27 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace mirage::ply {
 
 enum class Type : uint8_t { kInt8, kUint8, kInt16, kUint16, kInt32, kUint32, kFloat32, kFloat64 };
+
+// The C++ type of each Type, in the enum's order.
+using CppTypes = std::tuple<int8_t, uint8_t, int16_t, uint16_t, int32_t, uint32_t, float, double>;
+
+// f(T{}) for the C++ type T that `t` names: the one place that maps the PLY types to C++'s.
+template <typename F>
+auto visitType(Type t, F&& f) {
+  return [&]<size_t... I>(std::index_sequence<I...>) {
+    decltype(f(int8_t{})) out{};
+    ((size_t(t) == I ? void(out = f(std::tuple_element_t<I, CppTypes>{})) : void()), ...);
+    return out;
+  }
+  (std::make_index_sequence<std::tuple_size_v<CppTypes>>{});
+}
 
 size_t typeSize(Type t);
 bool isInteger(Type t);

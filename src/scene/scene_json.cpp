@@ -206,30 +206,25 @@ float keyTime(const Field& key, std::optional<float> previous) {
 }
 
 std::string resolvePath(const Context& ctx, const Field& field) {
-  std::string text = field.string();
-  fs::path path;
-  if (isAssetReference(text)) {
-    path = assetPath(field.where(), text);
-    if (!isFile(path))
-      field.fail(
-          "= {}: {} does not exist; run scripts/fetch-assets to download the assets (or "
-          "set MIRAGE_ASSET_DIR to where they are)",
-          shortQuote(text, 200), path.string());
-    return path.string();
-  }
-  path = fs::path(text);
-  if (path.is_relative()) {
+  const std::string text = field.string();
+  const bool asset = isAssetReference(text);
+  fs::path path = asset ? fs::path(assetPath(field.where(), text)) : fs::path(text);
+  if (!asset && path.is_relative()) {
     if (ctx.base_dir.empty())
       field.fail("= {}: a scene compiled into mirage can only refer to files as assets:<path>",
                  shortQuote(text, 200));
     path = fs::path(ctx.base_dir) / path;
   }
-  if (!isFile(path))
+  if (isFile(path)) return path.string();
+  if (asset)
     field.fail(
-        "= {}: no such file ({}; relative paths are relative to the scene file's folder, "
-        "assets:<path> to the asset directory)",
+        "= {}: {} does not exist; run scripts/fetch-assets to download the assets (or "
+        "set MIRAGE_ASSET_DIR to where they are)",
         shortQuote(text, 200), path.string());
-  return path.string();
+  field.fail(
+      "= {}: no such file ({}; relative paths are relative to the scene file's folder, "
+      "assets:<path> to the asset directory)",
+      shortQuote(text, 200), path.string());
 }
 
 int lookupName(const std::map<std::string, int>& names, const Field& field, const char* kind) {

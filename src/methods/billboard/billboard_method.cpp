@@ -10,14 +10,11 @@ namespace {
 class BillboardMethod final : public Method {
  public:
   explicit BillboardMethod(const MethodSetup& setup)
-      : info_(setup.info),
-        stage_(billboardStageOptions(setup.params)),
+      : stage_(billboardStageOptions(setup.params)),
         last_bounce_reflective_(lastBounceReflective(setup.params)),
         program_(gpu::Program::graphics("render/shaders/scene.vert",
                                         "methods/billboard/billboard.frag")),
         base_program_(baseColourProgram()) {}
-
-  const MethodInfo& info() const override { return info_; }
 
   void update(FrameContext& frame) override { stage_.update(frame); }
 
@@ -29,7 +26,6 @@ class BillboardMethod final : public Method {
   std::map<std::string, double> stats() const override { return stage_.stats(); }
 
  private:
-  const MethodInfo& info_;
   BillboardStage stage_;
   bool last_bounce_reflective_;
   gpu::Program program_, base_program_;

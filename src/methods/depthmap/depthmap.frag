@@ -74,14 +74,12 @@ bool depthmap_search(DepthMapData map, bool self, vec3 origin, vec3 dir,
 #if DEPTHMAP_SEARCH == MIRAGE_DEPTHMAP_SEARCH_LINEAR
   int examined;
   float lambda = depthmap_march(map.info.x, u_depthmap_size, p0, p1, examined);
-#elif DEPTHMAP_SEARCH == MIRAGE_DEPTHMAP_SEARCH_HIT
-  float lambda = srdm_intersect_two_rows(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
-#elif DEPTHMAP_SEARCH == MIRAGE_DEPTHMAP_SEARCH_INTERPOLATE
-  float lambda = srdm_intersect_interpolated(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
-#elif DEPTHMAP_SEARCH == MIRAGE_DEPTHMAP_SEARCH_HIT_INTERPOLATE
-  float lambda = srdm_intersect_hit_interpolated(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
 #else
-  float lambda = srdm_intersect(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m);
+  const bool hit_first = DEPTHMAP_SEARCH == MIRAGE_DEPTHMAP_SEARCH_HIT ||
+                         DEPTHMAP_SEARCH == MIRAGE_DEPTHMAP_SEARCH_HIT_INTERPOLATE;
+  const bool interpolate = DEPTHMAP_SEARCH == MIRAGE_DEPTHMAP_SEARCH_INTERPOLATE ||
+                           DEPTHMAP_SEARCH == MIRAGE_DEPTHMAP_SEARCH_HIT_INTERPOLATE;
+  float lambda = srdm_search(p0, p1, u_srdm_n, u_depthmap_size, u_srdm_m, hit_first, interpolate);
 #endif
   if (lambda < 0.0f) return false;
   float mu = depthmap_unproject_fraction(lambda, c0.w, c1.w);

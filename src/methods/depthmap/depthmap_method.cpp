@@ -49,8 +49,7 @@ SrdmSettings srdmSettings(const ParamValues& params) {
 class DepthMapMethod final : public Method {
  public:
   explicit DepthMapMethod(const MethodSetup& setup)
-      : info_(setup.info),
-        options_(depthMapOptions(setup.params)),
+      : options_(depthMapOptions(setup.params)),
         srdm_(srdmSettings(setup.params)),
         specs_(placeDepthMaps(setup.gpu.scene(), options_)),
         stage_(stageOptions(setup.params, specs_)),
@@ -60,8 +59,6 @@ class DepthMapMethod final : public Method {
                                         "methods/depthmap/depthmap.frag",
                                         shaderDefines(specs_, setup.params))),
         base_program_(baseColourProgram()) {}
-
-  const MethodInfo& info() const override { return info_; }
 
   void update(FrameContext& frame) override {
     stage_.update(frame);
@@ -137,7 +134,6 @@ class DepthMapMethod final : public Method {
     return o;
   }
 
-  const MethodInfo& info_;
   DepthMapOptions options_;
   SrdmSettings srdm_;
   std::vector<DepthMapSpec> specs_;

@@ -326,17 +326,11 @@ namespace mirage {
 float intersectSrdm(const Srdm& srdm, vec3 from, vec3 to, SrdmSearch search) {
   sh::g_searched = &srdm;
   const int n = srdm.domains, w = srdm.size, m = srdm.points;
-  switch (search) {
-    case SrdmSearch::kTwoRowsHit:
-      return sh::srdm_intersect_two_rows(from, to, n, w, m);
-    case SrdmSearch::kTwoRowsInterpolated:
-      return sh::srdm_intersect_interpolated(from, to, n, w, m);
-    case SrdmSearch::kHitInterpolated:
-      return sh::srdm_intersect_hit_interpolated(from, to, n, w, m);
-    case SrdmSearch::kOneRow:
-      break;
-  }
-  return sh::srdm_intersect(from, to, n, w, m);
+  const bool hit_first =
+      search == SrdmSearch::kTwoRowsHit || search == SrdmSearch::kHitInterpolated;
+  const bool interpolate =
+      search == SrdmSearch::kTwoRowsInterpolated || search == SrdmSearch::kHitInterpolated;
+  return sh::srdm_search(from, to, n, w, m, hit_first, interpolate);
 }
 
 SrdmError measureSrdmError(const DepthMap& map, const Srdm& srdm) {

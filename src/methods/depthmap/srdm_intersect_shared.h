@@ -79,21 +79,6 @@ SHARED_FN float srdm_intersect_at(vec3 from, vec3 to, int n, int w, int m, float
   return srdm_row_crossing(domain, row, m, vec2(a.x, from.z), vec2(b.x, to.z));
 }
 
-// The paper's search (§4.3 steps 4-5): the row through the projected ray's midpoint.
-SHARED_FN float srdm_intersect(vec3 from, vec3 to, int n, int w, int m) {
-  return srdm_intersect_at(from, to, n, w, m, 0.5f);
-}
-
-// Two rows (our answer to the paper's §5.2 "lookup the two best rows"): the row through the
-// midpoint stands for the whole ray, and is off the ray by up to half the ray's length times
-// the angle to the nearest domain; where it finds a hit, the row through that hit is the best
-// row there, so its answer replaces the first one's.
-SHARED_FN float srdm_intersect_two_rows(vec3 from, vec3 to, int n, int w, int m) {
-  float first = srdm_intersect_at(from, to, n, w, m, 0.5f);
-  if (first < 0.0f) return first;
-  return srdm_intersect_at(from, to, n, w, m, first);
-}
-
 // A row seen along the ray, for the interpolated search: the row's point k (0..m-1) in the ray's
 // order (reversed when the ray runs towards smaller s) as (lambda, depth, starts): lambda the
 // fraction of the way along the ray's projection, s0 + lambda (s1 - s0) = s, and starts 1 when
@@ -201,18 +186,22 @@ SHARED_FN float srdm_intersect_interpolated_at(vec3 from, vec3 to, int n, int w,
                              vec2(b0.x, b1.x), 1.0f - abs(off), m, from.z, to.z);
 }
 
-// --srdm-second interpolate: the two best rows through the projected ray's midpoint.
-SHARED_FN float srdm_intersect_interpolated(vec3 from, vec3 to, int n, int w, int m) {
-  return srdm_intersect_interpolated_at(from, to, n, w, m, 0.5f);
-}
-
-// --srdm-second hit-interpolate: the row through the midpoint finds where the ray meets the
-// surface; the two best rows through that point, interpolated, answer instead (a miss included),
-// as the one row through it does for --srdm-second hit. Three rows read.
-SHARED_FN float srdm_intersect_hit_interpolated(vec3 from, vec3 to, int n, int w, int m) {
-  float first = srdm_intersect_at(from, to, n, w, m, 0.5f);
-  if (first < 0.0f) return first;
-  return srdm_intersect_interpolated_at(from, to, n, w, m, first);
+// The searches, through the point at fraction `at` of the projected ray: its row, or with
+// `interpolate` the two best rows there, interpolated (--srdm-second interpolate). The paper's
+// search (§4.3 steps 4-5) is the one row through the midpoint. The midpoint's row stands for the
+// whole ray, and is off the ray by up to half the ray's length times the angle to the nearest
+// domain: with `hit_first` (--srdm-second hit and hit-interpolate, our answer to the paper's
+// §5.2 "lookup the two best rows") the midpoint's row finds where the ray meets the surface, and
+// the search through that point answers instead (a miss stays a miss; two or three rows read).
+SHARED_FN float srdm_search(vec3 from, vec3 to, int n, int w, int m, bool hit_first,
+                            bool interpolate) {
+  float at = 0.5f;
+  if (hit_first) {
+    at = srdm_intersect_at(from, to, n, w, m, 0.5f);
+    if (at < 0.0f) return at;
+  }
+  return interpolate ? srdm_intersect_interpolated_at(from, to, n, w, m, at)
+                     : srdm_intersect_at(from, to, n, w, m, at);
 }
 
 SHARED_END

@@ -22,8 +22,7 @@ std::vector<std::string> shaderDefines(Variant variant) {
 class EnvmapMethod final : public Method {
  public:
   EnvmapMethod(const MethodSetup& setup, Variant variant)
-      : info_(setup.info),
-        variant_(variant),
+      : variant_(variant),
         infinite_(variant == Variant::kInfinite),
         size_(infinite_ ? 0 : setup.params.integer("envmap-size")),
         sphere_proxy_(variant == Variant::kBox &&
@@ -33,8 +32,6 @@ class EnvmapMethod final : public Method {
                                         shaderDefines(variant))),
         base_program_(baseColourProgram()),
         diffuse_(setup.gpu.scene().diffuseInstances()) {}
-
-  const MethodInfo& info() const override { return info_; }
 
   void update(FrameContext& frame) override {
     if (infinite_) return;
@@ -137,7 +134,6 @@ class EnvmapMethod final : public Method {
     program_.set("u_sphere", vec4(box_.center(), box_.radius()));
   }
 
-  const MethodInfo& info_;
   Variant variant_;
   bool infinite_;
   int size_;

@@ -56,8 +56,7 @@ int minSubPixels(int m, int n) {
 class HybridMethod final : public Method {
  public:
   explicit HybridMethod(const MethodSetup& setup)
-      : info_(setup.info),
-        store_(setup.gpu.scene(), pointOptions(setup.params), treeOptions(setup.params)),
+      : store_(setup.gpu.scene(), pointOptions(setup.params), treeOptions(setup.params)),
         culling_(parseCulling(setup.params.text("hybrid-culling"))),
         first_only_(setup.params.choice<bool>("hybrid-projections", kFirstProjectionOnly)),
         keep_backfaces_(setup.params.choice<bool>("hybrid-backfaces", kKeepBackfaces)),
@@ -88,8 +87,6 @@ class HybridMethod final : public Method {
       gpu_cull_ = std::make_unique<KdGpuCull>(store_);
     }
   }
-
-  const MethodInfo& info() const override { return info_; }
 
   void update(FrameContext& frame) override {
     // The background probes show the objects without points, the reflectors and the light: a
@@ -329,7 +326,6 @@ class HybridMethod final : public Method {
           projected, expected);
   }
 
-  const MethodInfo& info_;
   PointStore store_;
   Culling culling_;
   bool first_only_, keep_backfaces_, eye_scaled_;

@@ -8,9 +8,8 @@ namespace {
 
 class NoneMethod final : public Method {
  public:
-  explicit NoneMethod(const MethodInfo& info) : info_(info), program_(baseColourProgram()) {}
+  explicit NoneMethod(const MethodSetup&) : program_(baseColourProgram()) {}
 
-  const MethodInfo& info() const override { return info_; }
   void update(FrameContext&) override {}
   void render(FrameContext& frame) override {
     frame.passes.drawDirect();
@@ -19,7 +18,6 @@ class NoneMethod final : public Method {
   }
 
  private:
-  const MethodInfo& info_;
   gpu::Program program_;
 };
 
@@ -30,9 +28,7 @@ MethodEntry noneMethodEntry() {
   entry.info.name = "none";
   entry.info.description = "no reflections: reflectors shaded with their base colour";
   entry.info.max_order = 0;
-  entry.create = [](const MethodSetup& setup) -> std::unique_ptr<Method> {
-    return std::make_unique<NoneMethod>(setup.info);
-  };
+  entry.create = factoryOf<NoneMethod>();
   return entry;
 }
 

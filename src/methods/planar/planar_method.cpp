@@ -12,13 +12,10 @@ namespace {
 class PlanarMethod final : public Method {
  public:
   explicit PlanarMethod(const MethodSetup& setup)
-      : info_(setup.info),
-        program_(gpu::Program::graphics("render/shaders/scene.vert",
+      : program_(gpu::Program::graphics("render/shaders/scene.vert",
                                         "render/shaders/mirror_image.frag")),
         base_program_(baseColourProgram()),
         planar_(planarReflectors(setup.gpu.scene(), &not_planar_, "planar")) {}
-
-  const MethodInfo& info() const override { return info_; }
 
   void update(FrameContext&) override {}  // nothing captured: every frame is drawn anew
 
@@ -94,7 +91,6 @@ class PlanarMethod final : public Method {
     return *row[k];
   }
 
-  const MethodInfo& info_;
   gpu::Program program_, base_program_;
   int not_planar_ = 0;
   std::vector<int> planar_;

@@ -9,11 +9,7 @@ namespace {
 class RaytraceMethod final : public Method {
  public:
   explicit RaytraceMethod(const MethodSetup& setup)
-      : info_(setup.info),
-        spp_(setup.params.integer("spp")),
-        tracer_(setup.gpu.scene(), setup.gpu.environmentMap()) {}
-
-  const MethodInfo& info() const override { return info_; }
+      : spp_(setup.params.integer("spp")), tracer_(setup.gpu.scene(), setup.gpu.environmentMap()) {}
 
   void update(FrameContext& frame) override {
     double ms = tracer_.prepare(frame.gpu.time());
@@ -47,7 +43,6 @@ class RaytraceMethod final : public Method {
   }
 
  private:
-  const MethodInfo& info_;
   int spp_;
   RayTracer tracer_;
   TraceResult result_;

@@ -53,8 +53,7 @@ struct GBuffer {
 class SsrMethod final : public Method {
  public:
   explicit SsrMethod(const MethodSetup& setup)
-      : info_(setup.info),
-        fallback_name_(setup.params.text("ssr-fallback")),
+      : fallback_name_(setup.params.text("ssr-fallback")),
         // --ssaa N adds log2 N levels to the pyramid, and a ray about two cells per level (one
         // down, one across): steps + 2 log2 N keeps the share of rays that run out of steps at
         // native resolution's (docs/reports.md has the sweep).
@@ -74,8 +73,6 @@ class SsrMethod final : public Method {
         MethodSetup{fallback.info, setup.gpu, setup.passes, setup.params, setup.settings});
     counts_.upload(std::span<const GLuint>(zeros_));
   }
-
-  const MethodInfo& info() const override { return info_; }
 
   void update(FrameContext& frame) override { fallback_->update(frame); }
 
@@ -156,7 +153,6 @@ class SsrMethod final : public Method {
   }
 
  private:
-  const MethodInfo& info_;
   std::string fallback_name_;
   int max_steps_;
   float thickness_, edge_fade_;

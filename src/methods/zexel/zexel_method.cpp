@@ -94,8 +94,7 @@ struct ZexelMirror {
 class ZexelMethod final : public Method {
  public:
   explicit ZexelMethod(const MethodSetup& setup)
-      : info_(setup.info),
-        options_(mapOptions(setup.params)),
+      : options_(mapOptions(setup.params)),
         // Pixel sizes are output pixels (FrameSettings::pixel_scale: --ssaa).
         pixel_scale_(setup.settings.pixel_scale),
         per_frame_(std::min(setup.params.integer("zexel-maps-per-frame"), options_.count)),
@@ -117,8 +116,6 @@ class ZexelMethod final : public Method {
     for (int mirror : planarReflectors(setup.gpu.scene(), &not_planar_, "zexel"))
       mirrors_.push_back(std::make_unique<ZexelMirror>(ZexelMirror{{mirror, options_}, {}}));
   }
-
-  const MethodInfo& info() const override { return info_; }
 
   // Captures every map the first time, when the scene changed, or when the eye crossed to a
   // mirror's other side.
@@ -273,7 +270,6 @@ class ZexelMethod final : public Method {
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   }
 
-  const MethodInfo& info_;
   ZexelMapOptions options_;
   int pixel_scale_, per_frame_, splat_, threads_;
   bool keep_;

@@ -203,6 +203,16 @@ SHARED_FN int zexel_cell_index(ivec2 pixel, ivec4 rect, int margin) {
   return at.y * cells.x + at.x;
 }
 
+// A child's colour into its parent's average, if it was written and lies at about the nearest
+// child's depth (its distance within `limit`).
+SHARED_FN void zexel_add_near_child(vec4 child, float limit, SHARED_INOUT(vec3) sum,
+                                    SHARED_INOUT(float) n) {
+  if (child.w > 0.0f && child.w <= limit) {
+    sum += vec3(child);
+    n += 1.0f;
+  }
+}
+
 // A zexel of the next coarser level from its four children (alpha: the distance, 0 never
 // written): the nearest child's distance — a coarse zexel never lets a nearer surface fall
 // through — with the colour averaged over the children at about its depth, so that colours do not
@@ -215,22 +225,10 @@ SHARED_FN vec4 zexel_parent(vec4 a, vec4 b, vec4 c, vec4 d) {
   float limit = nearest * ZEXEL_PYRAMID_SAME_DEPTH;
   vec3 sum = vec3(0.0f);
   float n = 0.0f;
-  if (a.w > 0.0f && a.w <= limit) {
-    sum += vec3(a);
-    n += 1.0f;
-  }
-  if (b.w > 0.0f && b.w <= limit) {
-    sum += vec3(b);
-    n += 1.0f;
-  }
-  if (c.w > 0.0f && c.w <= limit) {
-    sum += vec3(c);
-    n += 1.0f;
-  }
-  if (d.w > 0.0f && d.w <= limit) {
-    sum += vec3(d);
-    n += 1.0f;
-  }
+  zexel_add_near_child(a, limit, sum, n);
+  zexel_add_near_child(b, limit, sum, n);
+  zexel_add_near_child(c, limit, sum, n);
+  zexel_add_near_child(d, limit, sum, n);
   return vec4(sum / n, nearest);
 }
 
