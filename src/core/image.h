@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/check.h"
 #include "core/error.h"
 #include "core/math.h"
 
@@ -26,8 +27,14 @@ class Image2D {
   bool empty() const { return pixels_.empty(); }
   size_t pixelCount() const { return pixels_.size(); }
 
-  T& operator()(int x, int y) { return pixels_[size_t(y) * size_t(width_) + size_t(x)]; }
+  bool contains(int x, int y) const { return x >= 0 && y >= 0 && x < width_ && y < height_; }
+  // Pixel (x, y), (0, 0) the top left; checked in debug builds (the hot loops of every pass).
+  T& operator()(int x, int y) {
+    MIRAGE_DCHECK(contains(x, y));
+    return pixels_[size_t(y) * size_t(width_) + size_t(x)];
+  }
   const T& operator()(int x, int y) const {
+    MIRAGE_DCHECK(contains(x, y));
     return pixels_[size_t(y) * size_t(width_) + size_t(x)];
   }
   T* data() { return pixels_.data(); }

@@ -1,5 +1,6 @@
 #include "gpu/frame_timer.h"
 
+#include "core/check.h"
 #include "core/choices.h"
 #include "core/error.h"
 
@@ -35,24 +36,24 @@ void FrameTimer::mark(int part) {
 }
 
 void FrameTimer::beginFrame() {
-  if (!current_.marks.empty()) throwRuntime("FrameTimer::beginFrame inside a frame");
+  MIRAGE_CHECK(current_.marks.empty());  // beginFrame inside a frame
   mark(-1);
 }
 
 void FrameTimer::beginPart(Part part) {
-  if (current_.marks.empty()) throwRuntime("FrameTimer::beginPart outside a frame");
+  MIRAGE_CHECK(!current_.marks.empty());  // beginPart outside a frame
   mark(int(part));
 }
 
 void FrameTimer::endFrame() {
-  if (current_.marks.empty()) throwRuntime("FrameTimer::endFrame outside a frame");
+  MIRAGE_CHECK(!current_.marks.empty());  // endFrame outside a frame
   mark(kPartCount);
   pending_.push_back(std::move(current_));
   current_ = {};
 }
 
 void FrameTimer::shift(Part from, Part to, double ms) {
-  if (current_.marks.empty()) throwRuntime("FrameTimer::shift outside a frame");
+  MIRAGE_CHECK(!current_.marks.empty());  // shift outside a frame
   current_.shift_ms[size_t(from)] -= ms;
   current_.shift_ms[size_t(to)] += ms;
 }

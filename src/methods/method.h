@@ -133,7 +133,7 @@ const MethodEntry& findMethod(const std::string& name);
 std::vector<std::string> parseMethodList(const std::string& list);
 // Every parameter of `entries`, once per name, in the order first listed; methods that share a
 // parameter must declare it alike (name, type, range, default, choices, help), else
-// std::logic_error names both methods: a programming error, not an input error.
+// an internal error (core/check.h) names both methods: a programming error, not an input error.
 std::vector<ParamSpec> mergedParams(std::span<const MethodEntry> entries);
 // mergedParams of the registry (for the command line and the viewer).
 std::vector<ParamSpec> allMethodParams();

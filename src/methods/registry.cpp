@@ -1,6 +1,5 @@
 // The method registry: adding a method is one line here (plus its folder).
 #include <algorithm>
-#include <stdexcept>
 
 #include <fmt/ranges.h>
 
@@ -86,10 +85,11 @@ std::vector<ParamSpec> mergedParams(std::span<const MethodEntry> entries) {
         out.push_back(p);
         declared_by.push_back(e.info.name);
       } else if (!(*it == p)) {
-        throw std::logic_error(fmt::format(
-            "methods {} and {} declare --{} differently (a parameter of one name is one spec: "
-            "methods/probe_params.h)",
-            declared_by[size_t(it - out.begin())], e.info.name, p.name));
+        detail::checkFailed(
+            __FILE__, __LINE__, "same-named parameter specs are equal",
+            fmt::format(": methods {} and {} declare --{} differently (a parameter of one name is "
+                        "one spec: methods/probe_params.h)",
+                        declared_by[size_t(it - out.begin())], e.info.name, p.name));
       }
     }
   return out;

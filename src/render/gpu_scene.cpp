@@ -2,6 +2,7 @@
 
 #include <cstddef>
 
+#include "core/check.h"
 #include "gpu/feedback_check.h"
 #include "shading/gpu_types.h"
 
@@ -145,6 +146,7 @@ std::vector<vec3> GpuScene::uploadedPositions(int instance) const {
 }
 
 const Mesh& GpuScene::mesh(int instance) const {
+  MIRAGE_CHECK(instance >= 0 && size_t(instance) < scene_.instances.size());
   const Instance& inst = scene_.instances[size_t(instance)];
   return inst.deforms() ? deformed_[size_t(instance)] : scene_.meshes[size_t(inst.mesh)];
 }

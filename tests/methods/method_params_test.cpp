@@ -55,10 +55,11 @@ TEST(MethodParams, DifferingSpecsOfOneNameAreRefusedNamingBothMethods) {
   try {
     mergedParams(differing);
     FAIL() << "a second, different spec of --size was accepted";
-  } catch (const std::logic_error& e) {
+  } catch (const RuntimeError& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("methods a and b"), std::string::npos) << what;
     EXPECT_NE(what.find("--size"), std::string::npos) << what;
+    EXPECT_NE(what.find("internal error: "), std::string::npos) << what;
   }
 }
 

@@ -7,6 +7,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include "core/check.h"
 #include "core/timer.h"
 
 namespace mirage {
@@ -118,6 +119,8 @@ C3rcFrame buildC3rcFrame(const Scene& scene, const std::vector<int>& reflectors,
                          const std::vector<mat4>& matrices, const vec3& eye,
                          const PointStore& points, const C3rcFrameOptions& options,
                          const std::vector<const Mesh*>* meshes) {
+  MIRAGE_CHECK_EQ(pixels.size(), reflectors.size());  // a pixel count per reflector triangle
+  MIRAGE_CHECK_EQ(matrices.size(), scene.instances.size());
   Stopwatch watch;
   C3rcFrame frame;
   const std::vector<TriangleRef> triangles =
