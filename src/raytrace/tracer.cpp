@@ -288,7 +288,8 @@ void RayTracer::shadeTilePrimaries(const View& view, const PixelSamples& samples
                                    TileScratch& scratch, TraceResult& result) const {
   const ivec2 size = view.size();
   const TileRect t = tileRect(tx, ty, size);
-  size_t next = 0;  // the next of scratch.rays/hits
+  size_t next = 0;                      // the next of scratch.rays/hits
+  uint64_t primary = 0, reflected = 0;  // counted in registers, added to the scratch's at the end
   for (int y = t.y0; y < t.y1; ++y)
     for (int x = t.x0; x < t.x1; ++x) {
       int pixel = y * size.x + x;
@@ -305,12 +306,12 @@ void RayTracer::shadeTilePrimaries(const View& view, const PixelSamples& samples
           ray = scratch.rays[next];
           hit = scratch.hits[next++];
         }
-        ++scratch.primary;
+        ++primary;
         if (s == samples.centre_sample) centre_hit = hit;
         if (!hit.hit())
           sum += environment_.sample(ray.direction);
         else if (reflector_id_[size_t(hit.instance)] == 0)
-          sum += shadeHit<kReference>(ray, hit, 0, scratch.reflected);
+          sum += shadeHit<kReference>(ray, hit, 0, reflected);
         else
           scratch.pending.push_back({ray, hit, pixel});
       }
@@ -323,6 +324,8 @@ void RayTracer::shadeTilePrimaries(const View& view, const PixelSamples& samples
       float distance = centre_hit.hit() ? centre_hit.t : sh::MISS_DISTANCE;
       result.color(x, y) = vec4(sum / float(samples.spp), distance);
     }
+  scratch.primary += primary;
+  scratch.reflected += reflected;
 }
 
 template <bool kReference>

@@ -137,7 +137,7 @@ class BinaryReader {
   void beginElement() {}
   void endElement() {}
   double real(Type t) {
-    return visitType(t, [this](auto v) { return double(load<decltype(v)>()); });
+    return visitType(t, [this](auto v) { return double(this->template load<decltype(v)>()); });
   }
   int64_t integer(Type t) { return wholeNumber(*this, real(t)); }
   void skip(Type t) { skipBytes(typeSize(t)); }

@@ -105,8 +105,8 @@ std::string hdrClaiming(const std::string& resolution) {
   return "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n" + resolution + "\n" + std::string(64, '\x80');
 }
 
-std::vector<Hostile> hostileInputs() {
-  const std::string render = "render --method envmap --size 32x32 -o out.png --scene ";
+// Meshes: PLY, plain and compressed.
+std::vector<Hostile> plyInputs(const std::string& render) {
   return {
       {"PLY header claiming 10^12 vertices",
        "huge.ply",
@@ -146,6 +146,12 @@ std::vector<Hostile> hostileInputs() {
        [] { return replaceAll(triangle("3 0 1 2"), "1 0 0", "nan 0 0"); },
        render + "{}",
        {"nan.ply", "non-finite"}},
+  };
+}
+
+// Meshes: OBJ, glTF and GLB.
+std::vector<Hostile> objGltfInputs(const std::string& render) {
+  return {
       {"OBJ with an inf coordinate",
        "inf.obj",
        [] { return "v 0 0 0\nv inf 0 0\nv 0 1 0\nf 1 2 3\n"; },
@@ -193,6 +199,12 @@ std::vector<Hostile> hostileInputs() {
        [] { return std::string("glTF\x02\0\0\0\x00\x10\0\0", 12); },
        render + "{}",
        {"cut.glb"}},
+  };
+}
+
+// Images: PNG, EXR and Radiance HDR.
+std::vector<Hostile> imageInputs(const std::string& render) {
+  return {
       {"PNG claiming 1,000,000 x 1,000,000 pixels",
        "huge.png",
        [] { return pngClaiming(1000000, 1000000); },
@@ -219,6 +231,12 @@ std::vector<Hostile> hostileInputs() {
        "",
        {"zero-run.hdr", "scanline"}},
       {"empty image file", "empty.exr", [] { return std::string(); }, "", {"empty.exr", "empty"}},
+  };
+}
+
+// Scene, camera and event files.
+std::vector<Hostile> sceneFileInputs(const std::string& render) {
+  return {
       {"scene JSON cut short",
        "cut.json",
        [] { return std::string(R"({"name": "x", "materials": [)"); },
@@ -282,6 +300,12 @@ std::vector<Hostile> hostileInputs() {
        },
        "view --scene sphere-over-checker --frames 2 --events {}",
        {"events.json", "NOT_A_KEY"}},
+  };
+}
+
+// Options and names on the command line.
+std::vector<Hostile> optionInputs(const std::string& render) {
+  return {
       {"a folder given as a mesh", "", nullptr, render + "folder.ply", {"folder.ply", "folder"}},
       {"--max-memory out of range",
        "",
@@ -316,6 +340,14 @@ std::vector<Hostile> hostileInputs() {
        "render --method mirrorball -o out.png --scene sphere-over-checker",
        {"mirrorball", "allowed"}},
   };
+}
+
+std::vector<Hostile> hostileInputs() {
+  const std::string render = "render --method envmap --size 32x32 -o out.png --scene ";
+  std::vector<Hostile> all;
+  for (auto group : {plyInputs, objGltfInputs, imageInputs, sceneFileInputs, optionInputs})
+    for (Hostile& h : group(render)) all.push_back(std::move(h));
+  return all;
 }
 
 // The message without the test folder's path, first line only, bytes past ASCII escaped.

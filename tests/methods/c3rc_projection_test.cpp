@@ -124,12 +124,53 @@ const Sweep& sweep() {
   return result;
 }
 
+// How the analytic projections matched their brute-force roots.
+struct MatchTally {
+  int projections = 0, within_fixed = 0;
+  double worst = 0.0, worst_ratio = 0.0;  // the largest distance, and of its tolerance
+};
+
+// Each analytic projection of case `c` against its nearest unused brute-force root.
+void matchBruteForce(const Case& c, const Fan& fan, MatchTally& t) {
+  // The same projections. The brute-force roots are exact (double, residual < 1e-10); the
+  // shared code is float, and its projection misses q by its residual r (≤ 1e-4 · scale,
+  // checked by the caller), which moves (w0, w1, λ) by about |J⁻¹| r (J the fan's Jacobian there,
+  // large near a fold: up to ~400 per unit here). So each analytic projection must lie within
+  // kMatchTolerance + 2 |J⁻¹| r of its own brute-force root (barycentrics absolutely, λ
+  // relative beyond λ = 1): the same root, as precise as its residual allows, and never
+  // another projection of q, which is at least 5 grid cells (2e-2) away.
+  std::vector<bool> used(c.brute.projections.size(), false);
+  for (const Projection& p : c.analytic) {
+    size_t best = 0;
+    double best_e = kInfinity;
+    for (size_t b = 0; b < c.brute.projections.size(); ++b) {
+      double e = projectionDistance(p, c.brute.projections[b]);
+      if (!used[b] && e < best_e) {
+        best_e = e;
+        best = b;
+      }
+    }
+    used[best] = true;
+    const Projection& b = c.brute.projections[best];
+    const double residual = glm::length(fanPoint(fan, p.w, p.lambda) - dvec3(c.q));
+    const double spread = frobenius(glm::inverse(fanJacobian(fan, b)));
+    const double tolerance = kMatchTolerance + 2.0 * spread * residual;
+    t.worst = std::max(t.worst, best_e);
+    ++t.projections;
+    t.within_fixed += best_e <= 1e-4;
+    t.worst_ratio = std::max(t.worst_ratio, best_e / tolerance);
+    EXPECT_LE(best_e, tolerance) << kFamilyNames[c.family] << " λ " << p.lambda << " vs "
+                                 << b.lambda << " conditioning " << conditioning(fan, b)
+                                 << " residual " << residual << " |J^-1| " << spread;
+  }
+}
+
 TEST(C3rcProject, MatchesBruteForceSearchOfTheRayFan) {
   const Sweep& s = sweep();
   int counts[kFamilies][4] = {}, excluded_in[kFamilies] = {};
   int exclusions[kExclusions] = {};
-  int projections = 0, within_fixed = 0;
-  double worst_match = 0.0, worst_match_ratio = 0.0, worst_exact = 0.0, worst_exact_excluded = 0.0;
+  MatchTally match;
+  double worst_exact = 0.0, worst_exact_excluded = 0.0;
   int compared = 0;
   for (const Case& c : s.cases) {
     ++exclusions[c.exclusion];
@@ -166,37 +207,7 @@ TEST(C3rcProject, MatchesBruteForceSearchOfTheRayFan) {
     ASSERT_EQ(c.analytic.size(), c.brute.projections.size())
         << kFamilyNames[c.family] << (c.on_fan ? " fan" : " box") << " point (" << c.q.x << ", "
         << c.q.y << ", " << c.q.z << ")";
-    // The same projections. The brute-force roots are exact (double, residual < 1e-10); the
-    // shared code is float, and its projection misses q by its residual r (≤ 1e-4 · scale,
-    // checked above), which moves (w0, w1, λ) by about |J⁻¹| r (J the fan's Jacobian there,
-    // large near a fold: up to ~400 per unit here). So each analytic projection must lie within
-    // kMatchTolerance + 2 |J⁻¹| r of its own brute-force root (barycentrics absolutely, λ
-    // relative beyond λ = 1): the same root, as precise as its residual allows, and never
-    // another projection of q, which is at least 5 grid cells (2e-2) away.
-    std::vector<bool> used(c.brute.projections.size(), false);
-    for (const Projection& p : c.analytic) {
-      size_t best = 0;
-      double best_e = kInfinity;
-      for (size_t b = 0; b < c.brute.projections.size(); ++b) {
-        double e = projectionDistance(p, c.brute.projections[b]);
-        if (!used[b] && e < best_e) {
-          best_e = e;
-          best = b;
-        }
-      }
-      used[best] = true;
-      const Projection& b = c.brute.projections[best];
-      const double residual = glm::length(fanPoint(fan, p.w, p.lambda) - dvec3(c.q));
-      const double spread = frobenius(glm::inverse(fanJacobian(fan, b)));
-      const double tolerance = kMatchTolerance + 2.0 * spread * residual;
-      worst_match = std::max(worst_match, best_e);
-      ++projections;
-      within_fixed += best_e <= 1e-4;
-      worst_match_ratio = std::max(worst_match_ratio, best_e / tolerance);
-      EXPECT_LE(best_e, tolerance)
-          << kFamilyNames[c.family] << " λ " << p.lambda << " vs " << b.lambda << " conditioning "
-          << conditioning(fan, b) << " residual " << residual << " |J^-1| " << spread;
-    }
+    matchBruteForce(c, fan, match);
   }
   int excluded = int(s.cases.size()) - exclusions[kIncluded];
   std::printf("C3RC sweep: %zu cases (%.2f s), %d compared, %d excluded (%.2f%%):", s.cases.size(),
@@ -205,7 +216,8 @@ TEST(C3rcProject, MatchesBruteForceSearchOfTheRayFan) {
   std::printf(
       "\n  %d projections matched, %d within 1e-4; worst %.2e (%.2f of its tolerance); "
       "worst exactness %.2e (excluded cases %.2e)\n",
-      projections, within_fixed, worst_match, worst_match_ratio, worst_exact, worst_exact_excluded);
+      match.projections, match.within_fixed, match.worst, match.worst_ratio, worst_exact,
+      worst_exact_excluded);
   for (int f = 0; f < kFamilies; ++f)
     std::printf("  %-10s projections 0/1/2/3: %d/%d/%d/%d, %d excluded\n", kFamilyNames[f],
                 counts[f][0], counts[f][1], counts[f][2], counts[f][3], excluded_in[f]);
