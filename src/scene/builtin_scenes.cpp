@@ -1,13 +1,11 @@
 #include "scene/builtin_scenes.h"
 
 #include "core/error.h"
+#include "scene/builtin_scene_parts.h"
 #include "scene/procedural.h"
 
 namespace mirage {
 
-namespace {
-
-// The scene's camera "main", looking from `position` at `target`.
 void addMainCamera(Scene& s, vec3 position, vec3 target, float fov_y_degrees) {
   CameraDesc cam;
   cam.name = "main";
@@ -17,8 +15,6 @@ void addMainCamera(Scene& s, vec3 position, vec3 target, float fov_y_degrees) {
   s.cameras.push_back(cam);
 }
 
-// The scene's camera "walk": keyframes of position and target (core/camera_path), a recorded walk
-// that `mirage compare --path-frames` measures frame by frame.
 void addWalkCamera(Scene& s, std::vector<CameraKey> keys, float fov_y_degrees) {
   CameraDesc cam;
   cam.name = "walk";
@@ -35,6 +31,11 @@ quat rotationX(float degrees) {
 quat rotationY(float degrees) {
   return glm::angleAxis(radians(degrees), vec3(0, 1, 0));
 }
+quat rotationZ(float degrees) {
+  return glm::angleAxis(radians(degrees), vec3(0, 0, 1));
+}
+
+namespace {
 
 // A checkerboard floor of `size` units with one-unit cells, at y = 0.
 void addCheckerFloor(Scene& s, float size) {
@@ -405,6 +406,10 @@ constexpr BuiltinMaker kBuiltins[] = {
      "a rippling mirror pool on a checkerboard with objects around it: a deforming reflector "
      "(waves from a point, 2.5 s period)",
      ripplePool},
+    {"gallery",
+     "a room of mixed reflectors: two planar wall mirrors, a mirror sphere, a mirror teapot and a "
+     "concave mirror among eleven diffuse objects of different sizes (per-reflector techniques)",
+     galleryScene},
 };
 
 const BuiltinMaker* findBuiltin(const std::string& name) {
