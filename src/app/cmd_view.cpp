@@ -131,7 +131,8 @@ Command addViewCommand(CLI::App& parent) {
                       "where F12 writes screenshots and P camera paths (default: next to the "
                       "scene file, or the current folder)");
   for (const PathOption& o : kPathOptions) cmd.app->add_option(o.name, (*args).*o.field, o.help);
-  addDefaulted(cmd.app, "--truth", args->truth, "the ground truth at the start: off|split|flip");
+  addDefaulted(cmd.app, "--truth", args->truth,
+               "the ground truth at the start: " + choiceNames<TruthMode>(kTruthModes, "|"));
   cmd.app->add_flag("--heatmap", args->heatmap, "start with the error heat map on");
   addDefaulted(cmd.app, "--truth-resolution", args->truth_divisor,
                "the reference's resolution, 1/n of the frame's (1..8)");

@@ -174,6 +174,12 @@ bool isReference(const CompareReport& r, const MethodReport& m) {
   return m.name == r.reference;
 }
 
+const MethodReport* referenceOf(const CompareReport& r) {
+  for (const MethodReport& m : r.methods)
+    if (isReference(r, m)) return &m;
+  return nullptr;
+}
+
 // The best value of a column among the methods other than the reference (NaN if none): the
 // reference against itself is trivially perfect, so ranking it would say nothing.
 double bestOf(const CompareReport& r, const Column& c) {
@@ -311,9 +317,7 @@ std::string metricsJson(const CompareReport& r) {
 
 std::string reportHtml(const CompareReport& r) {
   if (!r.path.times.empty()) return pathReportHtml(r);
-  const MethodReport* ref = nullptr;
-  for (const MethodReport& m : r.methods)
-    if (!ref && isReference(r, m)) ref = &m;
+  const MethodReport* ref = referenceOf(r);
   std::string reference_section, figures;
   if (ref)
     reference_section = fmt::format(

@@ -42,6 +42,8 @@ inline constexpr Column kFirstFrameColumn{"first frame ms",
                                           false, [](const MethodReport& m) { return m.first_ms; }};
 
 bool isReference(const CompareReport& r, const MethodReport& m);
+// The first method that is the reference, or null.
+const MethodReport* referenceOf(const CompareReport& r);
 // The best value of a column among the methods other than the reference (NaN if none).
 double bestOf(const CompareReport& r, const Column& c);
 // The #metrics table: a header cell per column (plus method, order, note), a row per method with

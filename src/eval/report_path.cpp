@@ -256,9 +256,7 @@ void addPathJson(const CompareReport& r, nlohmann::json& j) {
 }
 
 std::string pathReportHtml(const CompareReport& r) {
-  const MethodReport* ref = nullptr;
-  for (const MethodReport& m : r.methods)
-    if (!ref && isReference(r, m)) ref = &m;
+  const MethodReport* ref = referenceOf(r);
   std::string figures;
   for (const MethodReport& m : r.methods)
     if (&m != ref) figures += methodFrames(r, m, ref);

@@ -25,6 +25,15 @@ void addWalkCamera(Scene& s, std::vector<CameraKey> keys, float fov_y_degrees) {
   s.cameras.push_back(cam);
 }
 
+std::vector<vec2> capProfile(float rim_degrees, int rings) {
+  std::vector<vec2> profile;  // rim to axis, so that the normals face into the cap
+  for (int i = rings; i >= 0; --i) {
+    const float t = glm::radians(rim_degrees) * float(i) / float(rings);
+    profile.push_back({std::sin(t), 1.0f - std::cos(t)});
+  }
+  return profile;
+}
+
 quat rotationX(float degrees) {
   return glm::angleAxis(radians(degrees), vec3(1, 0, 0));
 }
@@ -282,12 +291,7 @@ Scene glass(const SceneOptions&) {
 // converge and then diverge, where one C3RC projects a point twice (the hybrid paper's Figure 3).
 Scene concaveDish(const SceneOptions&) {
   Scene s;
-  std::vector<vec2> profile;  // rim to axis, so that the normals face into the dish
-  for (int i = 5; i >= 0; --i) {
-    const float t = glm::radians(40.0f) * float(i) / 5.0f;
-    profile.push_back({std::sin(t), 1.0f - std::cos(t)});
-  }
-  addObject(s, "dish", procedural::lathe(profile, 10), Material::mirror("mirror"), {});
+  addObject(s, "dish", procedural::lathe(capProfile(40.0f, 5), 10), Material::mirror("mirror"), {});
   addObject(s, "ball", procedural::sphere(0.08f, 64, 32),
             Material::diffuse("red", {0.9f, 0.2f, 0.2f}), placeAt({0.03f, 0.66f, -0.3f}));
   addMainCamera(s, {0.0f, 2.2f, 0.9f}, {0.0f, 0.1f, 0.0f}, 35.0f);

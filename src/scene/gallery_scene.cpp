@@ -30,14 +30,9 @@ void addCurvedMirrors(Scene& s) {
             placeAt({1.5f, 0.6f, -1.3f}));
   addObject(s, "mirror-teapot", procedural::teapotLike(), Material::mirror("silver", vec3(0.05f)),
             placeAt({-1.6f, 0.0f, 0.5f}, vec3(0.9f), rotationY(35.0f)));
-  // A spherical cap of radius 1 (rim at 45 degrees), its inside facing the room.
-  std::vector<vec2> profile;
-  for (int i = 8; i >= 0; --i) {
-    const float t = radians(45.0f) * float(i) / 8.0f;
-    profile.push_back({std::sin(t), 1.0f - std::cos(t)});
-  }
-  addObject(s, "concave-mirror", procedural::lathe(profile, 48), Material::mirror("dish"),
-            placeAt({2.5f, 1.6f, -3.6f}, vec3(0.9f), rotationX(90.0f)));
+  // A spherical cap (rim at 45 degrees), its inside facing the room.
+  addObject(s, "concave-mirror", procedural::lathe(capProfile(45.0f, 8), 48),
+            Material::mirror("dish"), placeAt({2.5f, 1.6f, -3.6f}, vec3(0.9f), rotationX(90.0f)));
 }
 
 // Eleven diffuse objects, from a 0.12 ball to a 2.6 column.

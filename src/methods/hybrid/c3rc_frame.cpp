@@ -41,11 +41,10 @@ float lodStride(float density, uint32_t pixels, long long kept) {
 }
 
 // The visible reflector triangles large enough to project (counted in `frame`).
-std::vector<TriangleRef> trianglesToProject(size_t reflectors,
-                                            const std::vector<std::vector<uint32_t>>& pixels,
+std::vector<TriangleRef> trianglesToProject(const std::vector<std::vector<uint32_t>>& pixels,
                                             int min_pixels, C3rcFrame& frame) {
   std::vector<TriangleRef> triangles;
-  for (size_t r = 0; r < reflectors; ++r)
+  for (size_t r = 0; r < pixels.size(); ++r)
     for (uint32_t t = 0; t < uint32_t(pixels[r].size()); ++t) {
       if (pixels[r][t] == 0) continue;
       ++frame.visible_triangles;
@@ -123,8 +122,7 @@ C3rcFrame buildC3rcFrame(const Scene& scene, const std::vector<int>& reflectors,
   MIRAGE_CHECK_EQ(matrices.size(), scene.instances.size());
   Stopwatch watch;
   C3rcFrame frame;
-  const std::vector<TriangleRef> triangles =
-      trianglesToProject(reflectors.size(), pixels, options.min_pixels, frame);
+  const std::vector<TriangleRef> triangles = trianglesToProject(pixels, options.min_pixels, frame);
   // Each cloud's world -> object map: the query moves, the tree stays.
   std::vector<mat4> to_object;
   for (const PointCloud& c : points.clouds())
