@@ -52,7 +52,8 @@ void addMethodParamOptions(CLI::App* app, std::map<std::string, std::string>& va
     std::string name = spec.name;
     app->add_option_function<std::string>(
            "--" + name, [&values, name](const std::string& v) { values[name] = v; },
-           spec.help + " (" + spec.rangeText() + ", default " + spec.default_value + ")")
+           spec.help + " (" + spec.rangeText() +
+               (spec.default_value.empty() ? "" : ", default " + spec.default_value) + ")")
         ->group("Method parameters");
   }
 }

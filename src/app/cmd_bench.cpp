@@ -81,7 +81,18 @@ struct Run {
   int frames = 0;  // frames to time
   size_t reflector_pixels = 0;
   std::map<std::string, double> counts;  // the sums of the timed frames' frameCounts
+  // The timed frames' times of each assigned part (`mixed`: one per assignment entry).
+  std::vector<std::pair<std::string, std::vector<double>>> entry_ms;
 };
+
+void addPartTimes(Run& r) {
+  for (const Method::PartTime& p : r.method->partTimes()) {
+    auto it = std::find_if(r.entry_ms.begin(), r.entry_ms.end(),
+                           [&](const auto& e) { return e.first == p.label; });
+    if (it == r.entry_ms.end()) it = r.entry_ms.insert(r.entry_ms.end(), {p.label, {}});
+    it->second.push_back(p.ms);
+  }
+}
 
 void validate(const BenchArgs& args) {
   if (args.frames < 1 || args.frames > 1000000)
@@ -165,6 +176,7 @@ TimedFrames timeFrames(std::vector<Run>& runs, FrameRenderer& renderer, const Ca
       std::map<std::string, double> counts;
       renderer.render(*r.method, frame_view, time, settings, r.timer.get(), &counts);
       for (const auto& [name, n] : counts) r.counts[name] += n;
+      addPartTimes(r);
       progress.advance();
     }
     if (isCheckpoint(f + 1, args.frames)) out.resources.push_back(resourcesAt(f + 1));
@@ -193,6 +205,12 @@ nlohmann::json methodEntry(Run& r, const FrameSettings& settings) {
     const Summary part = summarize(parts[size_t(p)]);
     ms_parts[gpu::partName(gpu::Part(p))] = part.median;
     ms_parts_p95[gpu::partName(gpu::Part(p))] = part.p95;
+  }
+  // A composite's entries, within "reflect", by their `--assign` text.
+  for (const auto& [label, ms] : r.entry_ms) {
+    const Summary part = summarize(ms);
+    ms_parts[label] = part.median;
+    ms_parts_p95[label] = part.p95;
   }
   e["ms_parts"] = ms_parts;
   e["ms_parts_p95"] = ms_parts_p95;

@@ -4,6 +4,7 @@
 // this header.
 #pragma once
 
+#include <algorithm>
 #include <functional>
 #include <map>
 #include <memory>
@@ -28,6 +29,9 @@ struct MethodInfo {
   int max_order = kAnyOrder;  // the highest reflection order it can produce
   int min_order = 0;          // the lowest --order it accepts (billboards need a reflection)
   bool gpu = true;            // false: renders on the CPU (the ray tracer)
+  // It draws by an assignment (`mixed`): not part of "--methods all", which compares the
+  // methods themselves.
+  bool needs_assignment = false;
   std::vector<ParamSpec> params;
   // Stats that count work since the method was made (captures, builds, rays): a frame's share is
   // their growth over that frame, 0 in a frame that redid nothing.
@@ -64,6 +68,28 @@ struct FrameContext {
   const View& view;
   const FrameSettings& settings;
   gpu::FrameTimer* timer = nullptr;  // null when not timing
+  // The reflectors this method draws in the eye view, instances in scene order; null: every
+  // reflector. Method `mixed` gives each assigned method its own and draws the direct part once
+  // itself (direct = false). Within its bounces and captures a method still shows every
+  // reflector its own way.
+  const std::vector<int>* own = nullptr;
+  bool direct = true;
+
+  // Whether this method draws reflector `instance` in the eye view.
+  bool owns(int instance) const {
+    return !own || std::find(own->begin(), own->end(), instance) != own->end();
+  }
+  // The direct part of the eye view (background and diffuse objects), unless drawn already.
+  void drawDirect() const {
+    if (direct) passes.drawDirect();
+  }
+  // This method's reflectors in the eye view, with `program`.
+  void drawOwnReflectors(const gpu::Program& program) const {
+    if (own)
+      passes.drawReflectorInstances(program, *own);
+    else
+      passes.drawReflectors(program);
+  }
 
   void beginPart(gpu::Part part) const {
     if (timer) timer->beginPart(part);
@@ -102,6 +128,13 @@ class Method {
   // Why `envmap` draws in this method's place (the driver refused it: methods/method_guard.h),
   // or empty.
   virtual std::string fallbackReason() const { return {}; }
+  // The wall time of each part of the last frame drawn with a timer, for methods made of parts
+  // (`mixed`: one per assignment entry, labelled as the entry), else empty.
+  struct PartTime {
+    std::string label;
+    double ms = 0.0;
+  };
+  virtual std::vector<PartTime> partTimes() const { return {}; }
 
  private:
   const MethodInfo* info_ = nullptr;

@@ -24,6 +24,7 @@ class MethodGuard : public Method {
   void render(FrameContext& frame) override;
   int orderRendered(int requested) const override { return current_->orderRendered(requested); }
   std::map<std::string, double> stats() const override { return current_->stats(); }
+  std::vector<PartTime> partTimes() const override { return current_->partTimes(); }
   std::string fallbackReason() const override { return reason_; }
 
  private:

@@ -45,7 +45,13 @@ ParamSpec ParamSpec::choice(std::string name, std::vector<std::string> choices, 
           std::move(choices), std::move(help)};
 }
 
+ParamSpec ParamSpec::text(std::string name, std::string range, std::string help) {
+  // A text parameter keeps its description of what it takes where a choice keeps its values.
+  return {std::move(name), Type::kText, 0, 0, "", {std::move(range)}, std::move(help)};
+}
+
 std::string ParamSpec::rangeText() const {
+  if (type == Type::kText) return choices.empty() ? "text" : choices.front();
   if (type == Type::kChoice) {
     std::string s;
     for (const auto& c : choices) s += (s.empty() ? "" : "|") + c;
@@ -82,6 +88,8 @@ void checkParam(const ParamSpec& spec, const std::string& value) {
       if (!ok) fail("not one of the choices");
       break;
     }
+    case ParamSpec::Type::kText:
+      break;  // the method reads and checks it
   }
 }
 

@@ -19,7 +19,7 @@ namespace mirage {
 //   constexpr Choice<Warper> kWarpers[] = {{"gpu", Warper::kGpu}, {"cpu", Warper::kCpu}};
 
 struct ParamSpec {
-  enum class Type { kInt, kFloat, kChoice };
+  enum class Type { kInt, kFloat, kChoice, kText };
 
   std::string name;  // command-line name without dashes, e.g. "envmap-size"
   Type type = Type::kInt;
@@ -35,7 +35,9 @@ struct ParamSpec {
   template <typename E>
   static ParamSpec choice(std::string name, std::span<const Choice<E>> choices, E def,
                           std::string help);
-  // "1..4096", "0..1e+06", "on|off".
+  // Free text that the method checks itself (mixed's assignment); `range` says what it takes.
+  static ParamSpec text(std::string name, std::string range, std::string help);
+  // "1..4096", "0..1e+06", "on|off", or a text parameter's `range`.
   std::string rangeText() const;
   bool operator==(const ParamSpec&) const = default;
 };

@@ -9,6 +9,7 @@
 #include "methods/envmap/envmap_method.h"
 #include "methods/hybrid/hybrid_method.h"
 #include "methods/method.h"
+#include "methods/mixed/mixed_method.h"
 #include "methods/none/none_method.h"
 #include "methods/planar/planar_method.h"
 #include "methods/raytrace/raytrace_method.h"
@@ -17,13 +18,24 @@
 
 namespace mirage {
 
-const std::vector<MethodEntry>& methodRegistry() {
-  static const std::vector<MethodEntry> registry = {
+namespace {
+
+std::vector<MethodEntry> makeRegistry() {
+  std::vector<MethodEntry> methods = {
       noneMethodEntry(),      envmapInfiniteMethodEntry(), envmapMethodEntry(),
       envmapBoxMethodEntry(), billboardMethodEntry(),      depthmapMethodEntry(),
       hybridMethodEntry(),    planarMethodEntry(),         zexelMethodEntry(),
       ssrMethodEntry(),       raytraceMethodEntry(),
   };
+  // Last: it takes every other method's parameters.
+  methods.push_back(mixedMethodEntry(methods));
+  return methods;
+}
+
+}  // namespace
+
+const std::vector<MethodEntry>& methodRegistry() {
+  static const std::vector<MethodEntry> registry = makeRegistry();
   return registry;
 }
 
@@ -40,7 +52,12 @@ const MethodEntry& findMethod(const std::string& name) {
 }
 
 std::vector<std::string> parseMethodList(const std::string& list) {
-  if (list == "all") return methodNames();
+  if (list == "all") {
+    std::vector<std::string> out;
+    for (const MethodEntry& e : methodRegistry())
+      if (!e.info.needs_assignment) out.push_back(e.info.name);
+    return out;
+  }
   std::vector<std::string> out;
   size_t start = 0;
   while (start <= list.size()) {

@@ -8,9 +8,9 @@ namespace mirage {
 
 void drawMirrorImages(const GpuScene& gpu, std::span<const MirrorImage> images,
                       const gpu::Program& mirror_program, const gpu::Program& base_program,
-                      int skip) {
+                      int skip, const std::vector<int>* only) {
   base_program.use();
-  for (int i : gpu.scene().reflectorInstances()) {
+  for (int i : only ? *only : gpu.scene().reflectorInstances()) {
     const bool with_image = std::any_of(images.begin(), images.end(),
                                         [&](const MirrorImage& m) { return m.mirror == i; });
     if (!with_image && i != skip) gpu.draw(i);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <span>
+#include <vector>
 
 #include "gpu/program.h"
 #include "render/frame_target.h"
@@ -17,10 +18,11 @@ struct MirrorImage {
 
 // Draws every reflector of the scene into the bound target: those in `images` with
 // `mirror_program` (render/shaders/mirror_image.frag: the image at the mirror's own pixels),
-// the others except `skip` with `base_program` (their base colour).
+// the others except `skip` with `base_program` (their base colour). With `only`, just the
+// reflectors it lists.
 void drawMirrorImages(const GpuScene& gpu, std::span<const MirrorImage> images,
                       const gpu::Program& mirror_program, const gpu::Program& base_program,
-                      int skip = -1);
+                      int skip = -1, const std::vector<int>* only = nullptr);
 
 // The pixels (window coordinates, origin bottom-left, [xy, zw)) that world bounds `b` may cover
 // in `view`, a pixel of margin around; the whole image when they reach behind the eye. Mirrored

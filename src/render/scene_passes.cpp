@@ -75,4 +75,10 @@ void ScenePasses::drawReflectors(const gpu::Program& program, int exclude) const
     if (i != exclude && s.isReflector(i)) scene_.draw(i);
 }
 
+void ScenePasses::drawReflectorInstances(const gpu::Program& program,
+                                         std::span<const int> instances) const {
+  program.use();
+  for (int i : instances) scene_.draw(i);
+}
+
 }  // namespace mirage

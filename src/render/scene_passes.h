@@ -37,6 +37,8 @@ class ScenePasses {
   void drawDiffuseInstances(std::span<const int> instances) const;
   // All reflector instances except `exclude`, with a method's reflector program.
   void drawReflectors(const gpu::Program& program, int exclude = -1) const;
+  // The given reflector instances only, in the order given.
+  void drawReflectorInstances(const gpu::Program& program, std::span<const int> instances) const;
   // Background and diffuse objects: the direct part of a frame.
   void drawDirect() const {
     drawBackground();

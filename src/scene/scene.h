@@ -2,6 +2,7 @@
 // cameras, one directional light plus ambient, and the distant environment.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -71,6 +72,18 @@ struct Instance {
   }
 };
 
+// One entry of a scene's reflection assignment (the top-level "reflections" of a scene file,
+// or `--assign`): the reflectors it covers (instance or material names, or globs of them; "*"
+// alone is the default entry, for every reflector no other entry names), the method that draws
+// them and that method's parameters as text. Plain data: methods/assignment.h resolves and
+// validates it against the scene and the method registry.
+struct ReflectionRule {
+  std::vector<std::string> reflectors;
+  std::string method;
+  std::map<std::string, std::string> params;  // name -> value ("order" sets the entry's K)
+  std::string where;  // where it was given, for messages: "scene.json: reflections[1]", "--assign"
+};
+
 struct Scene {
   std::string name;
   std::string source;  // the file it came from, or "builtin"
@@ -82,6 +95,7 @@ struct Scene {
   std::vector<CameraDesc> cameras;  // at least one after validation
   Light light;
   EnvironmentDesc environment;
+  std::vector<ReflectionRule> reflections;  // empty: no assignment (method `mixed` needs one)
 
   bool isReflector(int instance) const {
     return materials[size_t(instances[size_t(instance)].material)].isReflector();

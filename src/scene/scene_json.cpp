@@ -267,7 +267,7 @@ Scene parseSceneJson(const std::string& file, const std::string& text,
   ctx.base_dir = base_dir;
   Field root(ctx.file, doc, "");
   root.allowKeys({"name", "description", "environment", "light", "textures", "materials", "meshes",
-                  "instances", "cameras"},
+                  "instances", "cameras", "reflections"},
                  "a scene file");
   Scene& s = ctx.scene;
   s.source = file;
@@ -305,6 +305,7 @@ Scene parseSceneJson(const std::string& file, const std::string& text,
       s.cameras.push_back(std::move(c));
     }
   }
+  if (auto list = root.optional("reflections")) s.reflections = scene_json::parseReflections(*list);
   s.ensureCamera();
   s.validate();
   return s;

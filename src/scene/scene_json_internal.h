@@ -61,5 +61,7 @@ float keyTime(const Field& key, std::optional<float> previous);
 // One camera object; `index` names it when it has no name ("camera-<index + 1>").
 CameraDesc parseCamera(const Field& f, size_t index);
 void parseInstances(Context& ctx, const Field& root);
+// "reflections": [{"reflectors", "method", "params"}, ...] (scene_json_reflections.cpp).
+std::vector<ReflectionRule> parseReflections(const Field& list);
 
 }  // namespace mirage::scene_json

@@ -17,6 +17,7 @@
 #include "core/timer.h"
 #include "eval/metrics.h"
 #include "gpu/framebuffer.h"
+#include "viewer/viewer_assignment.h"
 #include "viewer/viewer_panel.h"
 
 namespace mirage {
@@ -205,6 +206,7 @@ bool ViewerApp::ensureStage(ivec2 size) {
     }
   }
   if (method_ && !state_.method_changed) return true;
+  seedAssignment(scene_, state_, method_name_);
   try {
     auto made = renderer_->createMethod(state_.method, state_.params, state_.settings);
     method_ = std::move(made);

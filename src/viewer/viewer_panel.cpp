@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 #include <imgui.h>
 
+#include "viewer/viewer_assignment.h"
+
 namespace mirage {
 
 namespace {
@@ -50,6 +52,15 @@ void parameterControl(ViewerState& state, const ParamSpec& spec) {
         ImGui::EndCombo();
       }
       break;
+    case ParamSpec::Type::kText: {
+      // Applied on Enter: a half-typed assignment is no assignment.
+      char buffer[1024] = {};
+      value.copy(buffer, sizeof(buffer) - 1);
+      if (ImGui::InputText(label.c_str(), buffer, sizeof(buffer),
+                           ImGuiInputTextFlags_EnterReturnsTrue))
+        setValue(state, spec, buffer);
+      break;
+    }
   }
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("%s\n(%s, default %s)", spec.help.c_str(), spec.rangeText().c_str(),
@@ -154,6 +165,7 @@ void drawViewerPanel(const Scene& scene, ViewerState& state) {
   ImGui::PushItemWidth(150 * scale);
   ImGui::Text("%s", scene.name.c_str());
   if (!state.selected.empty()) ImGui::Text("selected: %s (F frames it)", state.selected.c_str());
+  reflectorTechniqueControl(scene, state);
   if (ImGui::CollapsingHeader("method", ImGuiTreeNodeFlags_DefaultOpen)) methodSection(state);
   if (ImGui::CollapsingHeader("scene")) sceneSection(scene, state);
   if (ImGui::CollapsingHeader("ground truth", ImGuiTreeNodeFlags_DefaultOpen)) truthSection(state);

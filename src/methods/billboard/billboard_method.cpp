@@ -20,7 +20,7 @@ class BillboardMethod final : public Method {
 
   void render(FrameContext& frame) override {
     if (!stage_.beginFrame(frame, program_, base_program_, last_bounce_reflective_)) return;
-    drawReflectorsOnce(frame.passes, base_program_, program_);
+    drawReflectorsOnce(frame, base_program_, program_);
   }
 
   std::map<std::string, double> stats() const override { return stage_.stats(); }

@@ -99,7 +99,7 @@ class DepthMapMethod final : public Method {
     program_.set("u_depthmap_size", options_.size);
     program_.set("u_srdm_n", srdm_.domains);
     program_.set("u_srdm_m", srdm_.points);
-    drawReflectorsOnce(frame.passes, base_program_, program_);
+    drawReflectorsOnce(frame, base_program_, program_);
   }
 
   std::map<std::string, double> stats() const override {

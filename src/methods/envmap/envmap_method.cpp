@@ -49,16 +49,16 @@ class EnvmapMethod final : public Method {
   }
 
   void render(FrameContext& frame) override {
-    frame.passes.drawDirect();
+    frame.drawDirect();
     frame.beginPart(gpu::Part::kReflect);
     if (frame.settings.order == 0) {
-      frame.passes.drawReflectors(base_program_);
+      frame.drawOwnReflectors(base_program_);
       return;
     }
     if (!infinite_) probes_[final_].bind(MIRAGE_UNIT_METHOD);
     if (variant_ == Variant::kBox)
       centres_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_METHOD_SSBO);
-    frame.passes.drawReflectors(program_);
+    frame.drawOwnReflectors(program_);
   }
 
   int orderRendered(int requested) const override {

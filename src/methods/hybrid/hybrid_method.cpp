@@ -101,10 +101,10 @@ class HybridMethod final : public Method {
   }
 
   void render(FrameContext& frame) override {
-    frame.passes.drawDirect();
+    frame.drawDirect();
     frame.beginPart(gpu::Part::kReflect);
     if (frame.settings.order == 0 || reflectors_.empty()) {
-      frame.passes.drawReflectors(base_program_);
+      frame.drawOwnReflectors(base_program_);
       return;
     }
     Stopwatch visibility;
@@ -127,7 +127,7 @@ class HybridMethod final : public Method {
 
     probes_.bind(MIRAGE_UNIT_HYBRID_PROBES);
     glDepthFunc(GL_LEQUAL);  // the visibility pass left the reflectors' depth
-    frame.passes.drawReflectors(resolve_program_);
+    frame.drawOwnReflectors(resolve_program_);
     glDepthFunc(GL_LESS);
   }
 
@@ -246,7 +246,7 @@ class HybridMethod final : public Method {
     ids_fbo_->bind();
     const GLuint zero[4] = {0, 0, 0, 0};
     glClearNamedFramebufferuiv(ids_fbo_->id(), GL_COLOR, 0, zero);
-    frame.passes.drawReflectors(id_program_);
+    frame.drawOwnReflectors(id_program_);
     std::vector<uvec2> ids(size_t(size.x) * size_t(size.y));
     ids_.downloadLayer(0, 0, GL_RG_INTEGER, GL_UNSIGNED_INT, ids.data(),
                        ids.size() * sizeof(uvec2));

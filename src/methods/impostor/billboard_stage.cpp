@@ -50,16 +50,16 @@ BillboardStageOptions billboardStageOptions(const ParamValues& params) {
   return o;
 }
 
-void drawReflectorsOnce(ScenePasses& passes, const gpu::Program& depth_program,
+void drawReflectorsOnce(const FrameContext& frame, const gpu::Program& depth_program,
                         const gpu::Program& program) {
   glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  passes.drawReflectors(depth_program);
+  frame.drawOwnReflectors(depth_program);
   glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthFunc(GL_LEQUAL);
   glDepthMask(GL_FALSE);
-  passes.drawReflectors(program);
+  frame.drawOwnReflectors(program);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
 }
@@ -109,10 +109,10 @@ void BillboardStage::bind(const gpu::Program& program, const GpuScene& gpu) cons
 bool BillboardStage::beginFrame(FrameContext& frame, const gpu::Program& program,
                                 const gpu::Program& base_program,
                                 bool last_bounce_reflective) const {
-  frame.passes.drawDirect();
+  frame.drawDirect();
   frame.beginPart(gpu::Part::kReflect);
   if (frame.settings.order == 0 || empty()) {
-    frame.passes.drawReflectors(base_program);
+    frame.drawOwnReflectors(base_program);
     return false;
   }
   bind(program, frame.gpu);

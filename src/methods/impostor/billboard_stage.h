@@ -34,8 +34,8 @@ bool lastBounceReflective(const ParamValues& params);
 
 // Draws the reflectors' depth with `depth_program` (colour writes off), then `program` once per
 // visible reflector pixel (depth test LEQUAL, no depth writes): the expensive shader runs once
-// per pixel, with no overdraw.
-void drawReflectorsOnce(ScenePasses& passes, const gpu::Program& depth_program,
+// per pixel, with no overdraw. Only the frame's own reflectors (FrameContext::own).
+void drawReflectorsOnce(const FrameContext& frame, const gpu::Program& depth_program,
                         const gpu::Program& program);
 
 class BillboardStage {

@@ -12,9 +12,9 @@ class NoneMethod final : public Method {
 
   void update(FrameContext&) override {}
   void render(FrameContext& frame) override {
-    frame.passes.drawDirect();
+    frame.drawDirect();
     frame.beginPart(gpu::Part::kReflect);
-    frame.passes.drawReflectors(program_);
+    frame.drawOwnReflectors(program_);
   }
 
  private:

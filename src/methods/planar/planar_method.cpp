@@ -20,7 +20,7 @@ class PlanarMethod final : public Method {
   void update(FrameContext&) override {}  // nothing captured: every frame is drawn anew
 
   void render(FrameContext& frame) override {
-    frame.passes.drawDirect();
+    frame.drawDirect();
     frame.beginPart(gpu::Part::kReflect);
     mirrored_views_ = 0;
     drawReflectors(frame, frame.view, frame.target, frame.settings.order, 0, -1,
@@ -48,7 +48,7 @@ class PlanarMethod final : public Method {
     if (order > 0) {
       for (size_t k = 0; k < planar_.size(); ++k) {
         const int mirror = planar_[k];
-        if (mirror == from) continue;
+        if (mirror == from || (level == 0 && !frame.owns(mirror))) continue;
         vec3 point, normal;
         if (!planarInstancePlane(frame.gpu.scene(), mirror,
                                  frame.gpu.instanceMatrices()[size_t(mirror)], view.eye(), point,
@@ -73,8 +73,10 @@ class PlanarMethod final : public Method {
     target.bind();
     scissor(rect);
     frame.passes.begin(view, frame.settings);
-    // The mirror this view is mirrored in lies on its near plane: never drawn in it.
-    drawMirrorImages(frame.gpu, shown, program_, base_program_, from);
+    // The mirror this view is mirrored in lies on its near plane: never drawn in it. The eye
+    // view shows only this method's own reflectors.
+    drawMirrorImages(frame.gpu, shown, program_, base_program_, from,
+                     level == 0 ? frame.own : nullptr);
   }
 
   static void scissor(ivec4 r) {

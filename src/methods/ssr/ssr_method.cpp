@@ -117,7 +117,7 @@ class SsrMethod final : public Method {
     glBlendFuncSeparatei(0, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
     glDepthFunc(GL_LEQUAL);
     glDepthMask(GL_FALSE);
-    frame.passes.drawReflectors(program_);
+    frame.drawOwnReflectors(program_);
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);

@@ -78,6 +78,7 @@ void ZexelCurvedReflectors::draw(FrameContext& frame) const {
   cubes_.bind(MIRAGE_UNIT_METHOD);
   program_.use();
   for (size_t r = 0; r < curved_.size(); ++r) {
+    if (!frame.owns(curved_[r])) continue;
     program_.set("u_layer", int(r));
     program_.set("u_centre", centres_[r]);
     frame.gpu.draw(curved_[r]);

@@ -135,7 +135,7 @@ class ZexelMethod final : public Method {
   }
 
   void render(FrameContext& frame) override {
-    frame.passes.drawDirect();
+    frame.drawDirect();
     frame.beginPart(gpu::Part::kReflect);
     zexels_warped_ = tiles_warped_ = tile_levels_ = 0;
     const GLuint zero = 0;
@@ -144,7 +144,7 @@ class ZexelMethod final : public Method {
     std::vector<int> shown;
     for (auto& m : mirrors_) {
       if (m->drawn) m->shown_pixels = long(queryResult(m->pixels_query));
-      m->drawn = frame.settings.order > 0 && warp(frame, *m);
+      m->drawn = frame.settings.order > 0 && frame.owns(m->maps.mirror()) && warp(frame, *m);
       if (!m->drawn) continue;
       draw(frame, *m);
       shown.push_back(m->maps.mirror());
@@ -152,7 +152,8 @@ class ZexelMethod final : public Method {
     curved_.draw(frame);  // first: the base pass below then fails the depth test there
     base_program_.use();
     for (int i : frame.gpu.scene().reflectorInstances())
-      if (std::find(shown.begin(), shown.end(), i) == shown.end()) frame.gpu.draw(i);
+      if (frame.owns(i) && std::find(shown.begin(), shown.end(), i) == shown.end())
+        frame.gpu.draw(i);
   }
 
   int orderRendered(int requested) const override { return std::min(requested, 1); }
