@@ -10,6 +10,7 @@
 #include "core/memory_cap.h"
 #include "core/supersample.h"
 #include "gpu/framebuffer.h"
+#include "methods/assignment.h"
 #include "methods/method.h"
 #include "scene/camera_file.h"
 
@@ -82,6 +83,8 @@ Scene loadSceneFromArgs(SceneArgs& args) {
     scene.cameras.insert(scene.cameras.begin(), file.camera);
     if (file.time && !(args.time_option && args.time_option->count() > 0)) args.time = *file.time;
   }
+  // A scene file's assignment is checked as the scene is loaded, whatever the method.
+  if (!scene.reflections.empty()) resolveAssignment(scene, scene.reflections);
   return scene;
 }
 

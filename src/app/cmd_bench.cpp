@@ -8,6 +8,7 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/timing_summary.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/process_memory.h"
@@ -29,22 +30,6 @@ struct BenchArgs : RenderingArgs {
   double raytrace_budget_s = 20.0;
   std::string json;
 };
-
-struct Summary {
-  double min = 0, median = 0, p95 = 0;
-};
-
-Summary summarize(std::vector<double> v) {
-  if (v.empty()) return {};
-  std::sort(v.begin(), v.end());
-  auto at = [&](double q) {
-    double pos = q * double(v.size() - 1);
-    size_t i = size_t(pos);
-    double f = pos - double(i);
-    return i + 1 < v.size() ? v[i] * (1 - f) + v[i + 1] * f : v[i];
-  };
-  return {v.front(), at(0.5), at(0.95)};
-}
 
 nlohmann::json orNull(double v) {
   return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);

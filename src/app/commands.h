@@ -18,5 +18,6 @@ Command addRenderCommand(CLI::App& parent);
 Command addCompareCommand(CLI::App& parent);
 Command addBenchCommand(CLI::App& parent);
 Command addViewCommand(CLI::App& parent);
+Command addAdviseCommand(CLI::App& parent);
 
 }  // namespace mirage::app

@@ -22,7 +22,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "mirage 0.1.0");
   std::vector<app::Command> commands = {app::addScenesCommand(app), app::addRenderCommand(app),
                                         app::addCompareCommand(app), app::addBenchCommand(app),
-                                        app::addViewCommand(app)};
+                                        app::addViewCommand(app), app::addAdviseCommand(app)};
   // A first word that is no option and no command: name it (CLI11 would only say that a
   // subcommand is required).
   if (argc > 1 && argv[1][0] != '-') {

@@ -126,6 +126,18 @@ TEST(Interrupt, SigtermStopsCompareAndLeavesOnlyWholeFiles) {
     }
 }
 
+// advise under SIGINT while it measures: its folder holds nothing (it writes only at the end).
+TEST(Interrupt, CtrlCStopsAdviseAndWritesNothing) {
+  const fs::path dir = testTempDir("interrupt-advise");
+  fs::create_directories(dir / "out");
+  const Stopped s = runAndSignal({"advise", "--scene", "gallery", "--size", "720x512", "--ssaa",
+                                  "2", "-o", (dir / "out").string()},
+                                 SIGINT, std::chrono::milliseconds(2500), dir / "log.txt");
+  EXPECT_EQ(s.code, 130) << s.output;
+  EXPECT_LT(s.seconds_after_signal, 20.0);
+  EXPECT_EQ(filesIn(dir / "out"), std::vector<std::string>{}) << s.output;
+}
+
 // The viewer takes Ctrl-C as a close request: what it recorded and its report are written.
 TEST(ViewUnderXvfb, CtrlCClosesTheWindowAndKeepsTheRecordings) {
   MIRAGE_NEED_DISPLAY();

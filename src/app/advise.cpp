@@ -1,0 +1,271 @@
+#include "app/advise.h"
+
+#include <charconv>
+#include <cmath>
+
+#include <spdlog/spdlog.h>
+
+#include "app/advise_choice.h"
+#include "app/timing_summary.h"
+#include "core/error.h"
+#include "core/progress.h"
+#include "eval/metrics.h"
+#include "gpu/frame_timer.h"
+#include "methods/assignment.h"
+#include "methods/frame.h"
+
+namespace mirage::app {
+
+namespace {
+
+// Each method's main parameters: the grid advise tries besides the defaults.
+struct GridPoint {
+  const char* method;
+  std::map<std::string, std::string> params;
+};
+const std::vector<GridPoint>& gridPoints() {
+  static const std::vector<GridPoint> points = {
+      {"envmap", {{"envmap-size", "64"}}},        {"envmap-box", {{"envmap-size", "64"}}},
+      {"billboard", {{"billboard-size", "128"}}}, {"depthmap", {{"srdm-m", "16"}}},
+      {"depthmap", {{"depthmap-size", "128"}}},   {"planar", {{"order", "1"}}},
+      {"zexel", {{"zexel-size", "256"}}},
+  };
+  return points;
+}
+
+std::string labelOf(const std::string& method, const std::map<std::string, std::string>& params) {
+  std::string out = method;
+  for (const auto& [name, value] : params) out += ":" + name + "=" + value;
+  return out;
+}
+
+// The frames of one assignment timed at the output size: the median frame and each entry's.
+struct Timed {
+  double total_ms = 0.0;
+  std::vector<double> part_ms;
+};
+
+class Advisor {
+ public:
+  Advisor(const Scene& scene, const AdviseSetup& setup)
+      : scene_(scene),
+        setup_(setup),
+        quality_(scene, setup.size * setup.ssaa),
+        timing_(scene, setup.size),
+        reflectors_(scene.reflectorInstances()) {}
+
+  Advice run() {
+    if (reflectors_.empty()) throwInput("scene '{}' has no reflector to advise on", scene_.name);
+    const size_t r_count = reflectors_.size(), c_count = setup_.candidates.size();
+    const size_t views = setup_.views.size();
+    const size_t timed_frames = size_t(setup_.frames) * views + 2;
+    Progress progress("advise",
+                      (c_count + 2) * views + (c_count * (r_count + 1) + 3) * timed_frames);
+    progress_ = &progress;
+    Advice a;
+    a.candidates = setup_.candidates;
+    for (int i : reflectors_) a.reflectors.push_back(scene_.instances[size_t(i)].name);
+    references();
+    a.pixels = pixels_;
+    a.measured.assign(r_count, std::vector<Measured>(c_count));
+    for (size_t c = 0; c < c_count; ++c) {
+      const std::vector<double> sse =
+          reflectorErrors(setup_.candidates[c].method, setup_.candidates[c].params, "");
+      double sum = 0.0;
+      for (size_t r = 0; r < r_count; ++r) sum += (a.measured[r][c].sse = sse[r]);
+      a.single_sse.push_back(sum);
+    }
+    a.none_ms = time("none", {}, "").total_ms;
+    const Timed base = time("mixed", {}, "*=none");
+    a.base_ms = base.total_ms - base.part_ms.at(0);
+    for (size_t c = 0; c < c_count; ++c) {
+      const Candidate& cand = setup_.candidates[c];
+      a.single_ms.push_back(time(cand.method, cand.params, "").total_ms);
+      for (size_t r = 0; r < r_count; ++r) {
+        const std::string text = a.reflectors[r] + "=" + cand.label + ";*=none";
+        a.measured[r][c].part_ms = time("mixed", {}, text).part_ms.at(0);
+      }
+    }
+    a.budget_ms = setup_.budget.ms(a.none_ms);
+    choose(a);
+    const std::string text = assignText(a.rules);
+    a.measured_sse = 0.0;
+    for (double e : reflectorErrors("mixed", {}, text)) a.measured_sse += e;
+    a.measured_ms = time("mixed", {}, text).total_ms;
+    return a;
+  }
+
+ private:
+  void choose(Advice& a) const {
+    std::vector<std::vector<Option>> options(a.reflectors.size());
+    for (size_t r = 0; r < options.size(); ++r)
+      for (const Measured& m : a.measured[r]) options[r].push_back({m.part_ms, m.sse});
+    std::optional<Choice> choice = chooseWithin(options, a.budget_ms - a.base_ms);
+    a.fits = choice.has_value();
+    if (!choice) choice = cheapest(options);
+    a.chosen = choice->picked;
+    a.predicted_ms = a.base_ms + choice->cost_ms;
+    a.predicted_sse = choice->sse;
+    // One entry per candidate chosen, naming its reflectors.
+    for (size_t c = 0; c < a.candidates.size(); ++c) {
+      ReflectionRule rule{{}, a.candidates[c].method, a.candidates[c].params, "advise"};
+      for (size_t r = 0; r < a.chosen.size(); ++r)
+        if (a.chosen[r] == int(c)) rule.reflectors.push_back(a.reflectors[r]);
+      if (!rule.reflectors.empty()) a.rules.push_back(std::move(rule));
+    }
+  }
+
+  // The ray tracer's frames of every view: the reference, and each reflector's pixels in it.
+  void references() {
+    pixels_.assign(reflectors_.size(), 0);
+    for (const CalibrationView& v : setup_.views) {
+      RenderedFrame f = renderQuality("raytrace", {}, "", v);
+      for (uint32_t id : f.ids.pixels())
+        if (id > 0) ++pixels_[id - 1];
+      reference_ids_.push_back(f.ids);
+      reference_.push_back(toDisplay(f.color, setup_.display));
+    }
+  }
+
+  // What a method is made with: the candidate's parameters over the given ones, `mixed`'s
+  // assignment, and the frame settings at `pixel_scale` with the candidate's order.
+  struct Made {
+    std::map<std::string, std::string> params;
+    FrameSettings settings;
+  };
+  Made made(const std::string& method, std::map<std::string, std::string> params,
+            const std::string& assign, int pixel_scale) const {
+    for (const auto& [k, value] : setup_.params) params.try_emplace(k, value);
+    if (!assign.empty()) params["assign"] = assign;
+    FrameSettings settings = setup_.settings;
+    settings.pixel_scale = pixel_scale;
+    if (auto it = params.find("order"); it != params.end() && method != "mixed") {
+      settings.order = std::stoi(it->second);
+      params.erase(it);
+    }
+    return {std::move(params), settings};
+  }
+
+  RenderedFrame renderQuality(const std::string& method,
+                              const std::map<std::string, std::string>& params,
+                              const std::string& assign, const CalibrationView& v) {
+    const auto [given, settings] = made(method, params, assign, setup_.ssaa);
+    auto m = quality_.createMethod(method, given, settings);
+    quality_.render(*m, View(v.camera, quality_.size()), v.time, settings);
+    progress_->advance();
+    return downsample(quality_.read(), setup_.ssaa);
+  }
+
+  // Each reflector's summed squared error over the views (its pixels in the reference).
+  std::vector<double> reflectorErrors(const std::string& method,
+                                      const std::map<std::string, std::string>& params,
+                                      const std::string& assign) {
+    std::vector<double> sse(reflectors_.size(), 0.0);
+    for (size_t v = 0; v < setup_.views.size(); ++v) {
+      const Image shown =
+          toDisplay(renderQuality(method, params, assign, setup_.views[v]).color, setup_.display);
+      for (size_t r = 0; r < reflectors_.size(); ++r) {
+        IdImage mask = reference_ids_[v];
+        for (uint32_t& id : mask.pixels()) id = id == uint32_t(r + 1) ? 1u : 0u;
+        const size_t n = countNonZero(mask);
+        if (n > 0) sse[r] += meanSquaredError(shown, reference_[v], &mask) * double(n);
+      }
+    }
+    return sse;
+  }
+
+  // Times one assignment (or one method alone): two untimed frames, then `frames` rounds over
+  // the views, timed by the wall clock around glFinish.
+  Timed time(const std::string& method, const std::map<std::string, std::string>& params,
+             const std::string& assign) {
+    const auto [given, settings] = made(method, params, assign, 1);  // at the output size
+    auto m = timing_.createMethod(method, given, settings);
+    const CalibrationView& first = setup_.views.front();
+    for (int i = 0; i < 2; ++i) {
+      timing_.render(*m, View(first.camera, setup_.size), first.time, settings);
+      progress_->advance();
+    }
+    std::vector<double> total;
+    std::vector<std::vector<double>> parts;
+    for (int f = 0; f < setup_.frames; ++f)
+      for (const CalibrationView& v : setup_.views) {
+        gpu::FrameTimer timer(gpu::Clock::kWall);
+        timing_.render(*m, View(v.camera, setup_.size), v.time, settings, &timer);
+        total.push_back(timer.takeResults().front().total_ms);
+        const std::vector<Method::PartTime> p = m->partTimes();
+        parts.resize(p.size());
+        for (size_t k = 0; k < p.size(); ++k) parts[k].push_back(p[k].ms);
+        progress_->advance();
+      }
+    Timed out{summarize(total).median, {}};
+    for (const auto& list : parts) out.part_ms.push_back(summarize(list).median);
+    return out;
+  }
+
+  const Scene& scene_;
+  const AdviseSetup& setup_;
+  FrameRenderer quality_, timing_;
+  std::vector<int> reflectors_;
+  std::vector<Image> reference_;
+  std::vector<IdImage> reference_ids_;
+  std::vector<size_t> pixels_;
+  Progress* progress_ = nullptr;
+};
+
+}  // namespace
+
+Budget parseBudget(const std::string& b) {
+  const bool relative = !b.empty() && (b.back() == 'x' || b.back() == 'X');
+  const std::string number = relative ? b.substr(0, b.size() - 1) : b;
+  double v = 0.0;
+  auto [ptr, ec] = std::from_chars(number.data(), number.data() + number.size(), v);
+  if (number.empty() || ec != std::errc() || ptr != number.data() + number.size() || !(v > 0.0) ||
+      !std::isfinite(v))
+    throwInput(
+        "--budget {}: expected milliseconds (> 0, e.g. 25) or a multiple of the none frame's "
+        "median (e.g. 4x)",
+        b);
+  return {v, relative};
+}
+
+std::vector<Candidate> candidateGrid(const std::vector<std::string>& methods) {
+  std::vector<Candidate> out;
+  for (const std::string& m : methods) {
+    out.push_back({m, {}, m});
+    for (const GridPoint& g : gridPoints())
+      if (g.method == m) out.push_back({m, g.params, labelOf(m, g.params)});
+  }
+  return out;
+}
+
+std::vector<CalibrationView> calibrationViews(const Scene& scene, float time, int along) {
+  std::vector<CalibrationView> out;
+  const CameraDesc* walk = nullptr;
+  for (const CameraDesc& c : scene.cameras) {
+    out.push_back({c.at(time), time, c.name});
+    if (!walk && !c.path.empty()) walk = &c;
+  }
+  if (!walk) return out;
+  const float t0 = walk->path.keys.front().time, t1 = walk->path.keys.back().time;
+  for (int k = 0; k < along; ++k) {
+    const float t = t0 + (t1 - t0) * (float(k) + 0.5f) / float(along);
+    out.push_back({walk->at(t), t, fmt::format("{}@{:.2f}s", walk->name, t)});
+  }
+  return out;
+}
+
+size_t Advice::totalPixels() const {
+  size_t n = 0;
+  for (size_t p : pixels) n += p;
+  return n;
+}
+
+double Advice::psnr(double sse) const {
+  return psnrFromMse(sse / double(std::max<size_t>(totalPixels(), 1)));
+}
+
+Advice advise(const Scene& scene, const AdviseSetup& setup) {
+  return Advisor(scene, setup).run();
+}
+
+}  // namespace mirage::app

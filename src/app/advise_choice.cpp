@@ -1,0 +1,72 @@
+#include "app/advise_choice.h"
+
+#include <cmath>
+#include <limits>
+
+#include "core/check.h"
+
+namespace mirage::app {
+
+namespace {
+
+int steps(double ms) {
+  return int(std::ceil(std::max(ms, 0.0) / kCostStep - 1e-9));
+}
+
+Choice summed(const std::vector<std::vector<Option>>& options, std::vector<int> picked) {
+  Choice c{std::move(picked), 0.0, 0.0};
+  for (size_t r = 0; r < options.size(); ++r) {
+    c.cost_ms += options[r][size_t(c.picked[r])].cost_ms;
+    c.sse += options[r][size_t(c.picked[r])].sse;
+  }
+  return c;
+}
+
+}  // namespace
+
+std::optional<Choice> chooseWithin(const std::vector<std::vector<Option>>& options,
+                                   double budget_ms) {
+  if (budget_ms < 0.0) return std::nullopt;
+  const int capacity = int(std::floor(budget_ms / kCostStep + 1e-9));
+  constexpr double kNone = std::numeric_limits<double>::infinity();
+  // best[r][c]: the least error of reflectors 0..r-1 within c steps; from[r][c] its option.
+  std::vector<std::vector<double>> best(options.size() + 1,
+                                        std::vector<double>(size_t(capacity) + 1, kNone));
+  std::vector<std::vector<int>> from(options.size(), std::vector<int>(size_t(capacity) + 1, -1));
+  std::fill(best[0].begin(), best[0].end(), 0.0);
+  for (size_t r = 0; r < options.size(); ++r) {
+    MIRAGE_CHECK(!options[r].empty());
+    for (int c = 0; c <= capacity; ++c)
+      for (size_t o = 0; o < options[r].size(); ++o) {
+        const int s = steps(options[r][o].cost_ms);
+        if (s > c || best[r][size_t(c - s)] == kNone) continue;
+        const double e = best[r][size_t(c - s)] + options[r][o].sse;
+        if (e < best[r + 1][size_t(c)]) {
+          best[r + 1][size_t(c)] = e;
+          from[r][size_t(c)] = int(o);
+        }
+      }
+  }
+  if (best.back()[size_t(capacity)] == kNone) return std::nullopt;
+  std::vector<int> picked(options.size());
+  int c = capacity;
+  for (size_t r = options.size(); r-- > 0;) {
+    picked[r] = from[r][size_t(c)];
+    c -= steps(options[r][size_t(picked[r])].cost_ms);
+  }
+  return summed(options, std::move(picked));
+}
+
+Choice cheapest(const std::vector<std::vector<Option>>& options) {
+  std::vector<int> picked;
+  for (const auto& list : options) {
+    MIRAGE_CHECK(!list.empty());
+    int k = 0;
+    for (size_t o = 1; o < list.size(); ++o)
+      if (list[o].cost_ms < list[size_t(k)].cost_ms) k = int(o);
+    picked.push_back(k);
+  }
+  return summed(options, std::move(picked));
+}
+
+}  // namespace mirage::app

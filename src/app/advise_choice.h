@@ -1,0 +1,32 @@
+// The choice of `mirage advise` (docs/advise.md): one candidate per reflector, the least summed
+// squared error within a frame budget — a multiple-choice knapsack, solved exactly by dynamic
+// programming over the cost in steps of `kCostStep` ms (each cost rounded up, so that what is
+// chosen fits).
+#pragma once
+
+#include <optional>
+#include <vector>
+
+namespace mirage::app {
+
+inline constexpr double kCostStep = 0.01;  // ms
+
+struct Option {
+  double cost_ms = 0.0;  // what it adds to the frame
+  double sse = 0.0;      // summed squared error over the reflector's pixels
+};
+
+struct Choice {
+  std::vector<int> picked;  // an option per reflector
+  double cost_ms = 0.0;     // their summed cost
+  double sse = 0.0;         // their summed error
+};
+
+// The options, one per reflector, with the least summed error whose summed cost is at most
+// `budget_ms`; empty when even the cheapest options exceed it. Every reflector needs one option.
+std::optional<Choice> chooseWithin(const std::vector<std::vector<Option>>& options,
+                                   double budget_ms);
+// The cheapest option of every reflector (what to say when nothing fits).
+Choice cheapest(const std::vector<std::vector<Option>>& options);
+
+}  // namespace mirage::app
