@@ -60,7 +60,7 @@ class Advisor {
     const size_t views = setup_.views.size();
     const size_t timed_frames = size_t(setup_.frames) * views + 2;
     Progress progress("advise",
-                      (c_count + 2) * views + (c_count * (r_count + 1) + 3) * timed_frames);
+                      (2 * c_count + 2) * views + (c_count * (r_count + 1) + 3) * timed_frames);
     progress_ = &progress;
     Advice a;
     a.candidates = setup_.candidates;
@@ -69,10 +69,20 @@ class Advisor {
     a.pixels = pixels_;
     a.measured.assign(r_count, std::vector<Measured>(c_count));
     for (size_t c = 0; c < c_count; ++c) {
-      const std::vector<double> sse =
-          reflectorErrors(setup_.candidates[c].method, setup_.candidates[c].params, "");
+      const Candidate& cand = setup_.candidates[c];
+      // Each reflector as a composite draws it (an entry of its own: a method drawn beside
+      // others may show what it sees otherwise, as planar its curved reflectors), then the
+      // method alone, the single-method frame.
+      std::string each;
+      for (const std::string& name : a.reflectors)
+        each += (each.empty() ? "" : ";") + name + "=" + cand.label;
+      const std::vector<double> alone = reflectorErrors(cand.method, cand.params, "");
+      const std::vector<double> sse = r_count > 1 ? reflectorErrors("mixed", {}, each) : alone;
       double sum = 0.0;
-      for (size_t r = 0; r < r_count; ++r) sum += (a.measured[r][c].sse = sse[r]);
+      for (size_t r = 0; r < r_count; ++r) {
+        a.measured[r][c].sse = sse[r];
+        sum += alone[r];
+      }
       a.single_sse.push_back(sum);
     }
     a.none_ms = time("none", {}, "").total_ms;
@@ -81,10 +91,18 @@ class Advisor {
     for (size_t c = 0; c < c_count; ++c) {
       const Candidate& cand = setup_.candidates[c];
       a.single_ms.push_back(time(cand.method, cand.params, "").total_ms);
+      double parts = 0.0, least = 1e300;
       for (size_t r = 0; r < r_count; ++r) {
         const std::string text = a.reflectors[r] + "=" + cand.label + ";*=none";
         a.measured[r][c].part_ms = time("mixed", {}, text).part_ms.at(0);
+        parts += a.measured[r][c].part_ms;
+        least = std::min(least, a.measured[r][c].part_ms);
       }
+      // The entry's overhead: what the parts timed one reflector at a time add up to beyond the
+      // candidate drawing all of them in one entry (its frame less the rest of a frame).
+      const double all = a.single_ms.back() - a.base_ms;
+      a.fixed_ms.push_back(r_count > 1 ? std::clamp((parts - all) / double(r_count - 1), 0.0, least)
+                                       : 0.0);
     }
     a.budget_ms = setup_.budget.ms(a.none_ms);
     choose(a);
@@ -97,12 +115,21 @@ class Advisor {
 
  private:
   void choose(Advice& a) const {
+    // Each reflector's cost beyond its candidate's entry overhead, paid once per entry.
     std::vector<std::vector<Option>> options(a.reflectors.size());
     for (size_t r = 0; r < options.size(); ++r)
-      for (const Measured& m : a.measured[r]) options[r].push_back({m.part_ms, m.sse});
-    std::optional<Choice> choice = chooseWithin(options, a.budget_ms - a.base_ms);
+      for (size_t c = 0; c < a.candidates.size(); ++c)
+        options[r].push_back({a.measured[r][c].part_ms - a.fixed_ms[c], a.measured[r][c].sse});
+    std::optional<Choice> choice =
+        chooseWithFixed(options, a.fixed_ms, a.budget_ms - a.base_ms, kMaxAdviseEntries);
     a.fits = choice.has_value();
-    if (!choice) choice = cheapest(options);
+    if (!choice) {
+      choice = cheapest(options);
+      std::vector<bool> used(a.candidates.size(), false);
+      for (int c : choice->picked) used[size_t(c)] = true;
+      for (size_t c = 0; c < used.size(); ++c)
+        if (used[c]) choice->cost_ms += a.fixed_ms[c];
+    }
     a.chosen = choice->picked;
     a.predicted_ms = a.base_ms + choice->cost_ms;
     a.predicted_sse = choice->sse;

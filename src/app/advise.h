@@ -24,6 +24,10 @@ struct Budget {
 // Throws InputError naming --budget when `text` is neither.
 Budget parseBudget(const std::string& text);
 
+// The most entries (distinct candidates) a chosen assignment has: the choice is exact among
+// those (app/advise_choice.h).
+inline constexpr int kMaxAdviseEntries = 3;
+
 // A method with parameter values: one point of a method's grid.
 struct Candidate {
   std::string method;
@@ -71,6 +75,9 @@ struct Advice {
   double base_ms = 0.0;  // a composite's frame without its parts: update, direct part, overhead
   std::vector<double> single_ms;   // each candidate drawing every reflector (median)
   std::vector<double> single_sse;  // its summed error over every reflector
+  // Each candidate's entry overhead, paid once per entry: from its parts timed one reflector at a
+  // time against its single-method frame.
+  std::vector<double> fixed_ms;
   double budget_ms = 0.0;
   bool fits = false;
   std::vector<int> chosen;  // the candidate of each reflector (the cheapest when nothing fits)

@@ -1,6 +1,7 @@
 #include "app/advise_choice.h"
 
 #include <cmath>
+#include <functional>
 #include <limits>
 
 #include "core/check.h"
@@ -67,6 +68,55 @@ Choice cheapest(const std::vector<std::vector<Option>>& options) {
     picked.push_back(k);
   }
   return summed(options, std::move(picked));
+}
+
+namespace {
+
+// Calls `visit` with every set of at most `k` of the indices 0..n-1 (as a list, ascending).
+void subsets(int n, int k, std::vector<int>& set, int from,
+             const std::function<void(const std::vector<int>&)>& visit) {
+  if (!set.empty()) visit(set);
+  if (int(set.size()) == k) return;
+  for (int i = from; i < n; ++i) {
+    set.push_back(i);
+    subsets(n, k, set, i + 1, visit);
+    set.pop_back();
+  }
+}
+
+}  // namespace
+
+std::optional<Choice> chooseWithFixed(const std::vector<std::vector<Option>>& options,
+                                      const std::vector<double>& fixed_ms, double budget_ms,
+                                      int max_distinct) {
+  const int n = int(fixed_ms.size());
+  for (const auto& list : options) MIRAGE_CHECK(int(list.size()) == n);
+  std::optional<Choice> best;
+  std::vector<int> set;
+  subsets(n, max_distinct, set, 0, [&](const std::vector<int>& u) {
+    double fixed = 0.0;
+    for (int c : u) fixed += fixed_ms[size_t(c)];
+    std::vector<std::vector<Option>> restricted(options.size());
+    for (size_t r = 0; r < options.size(); ++r)
+      for (int c : u) restricted[r].push_back(options[r][size_t(c)]);
+    std::optional<Choice> within = chooseWithin(restricted, budget_ms - fixed);
+    if (!within) return;
+    Choice choice;
+    std::vector<bool> used(size_t(n), false);
+    for (size_t r = 0; r < options.size(); ++r) {
+      const int c = u[size_t(within->picked[r])];
+      choice.picked.push_back(c);
+      choice.cost_ms += options[r][size_t(c)].cost_ms;
+      choice.sse += options[r][size_t(c)].sse;
+      used[size_t(c)] = true;
+    }
+    for (int c = 0; c < n; ++c)
+      if (used[size_t(c)]) choice.cost_ms += fixed_ms[size_t(c)];
+    if (!best || choice.sse < best->sse ||
+        (choice.sse == best->sse && choice.cost_ms < best->cost_ms))
+      best = std::move(choice);
+  });
+  return best;
 }
 
 }  // namespace mirage::app

@@ -29,4 +29,13 @@ std::optional<Choice> chooseWithin(const std::vector<std::vector<Option>>& optio
 // The cheapest option of every reflector (what to say when nothing fits).
 Choice cheapest(const std::vector<std::vector<Option>>& options);
 
+// The same choice where option c of every reflector is candidate c, and a candidate costs
+// `fixed_ms[c]` once if any reflector takes it (an entry's own overhead) besides each
+// reflector's `cost_ms`. Exact over the assignments that use at most `max_distinct` candidates:
+// for each such set, the multiple-choice knapsack within the budget less the set's fixed costs.
+// The choice's cost counts the fixed costs of the candidates it uses.
+std::optional<Choice> chooseWithFixed(const std::vector<std::vector<Option>>& options,
+                                      const std::vector<double>& fixed_ms, double budget_ms,
+                                      int max_distinct);
+
 }  // namespace mirage::app

@@ -145,8 +145,11 @@ nlohmann::json adviceJson(const Advice& a, const std::string& scene_name) {
   j["fits"] = a.fits;
   j["none_ms"] = a.none_ms;
   j["base_ms"] = a.base_ms;
+  j["max_entries"] = kMaxAdviseEntries;
   j["predicted"] = {{"psnr_reflector", number(a.psnr(a.predicted_sse))}, {"ms", a.predicted_ms}};
-  j["measured"] = {{"psnr_reflector", number(a.psnr(a.measured_sse))}, {"ms", a.measured_ms}};
+  j["measured"] = {{"psnr_reflector", number(a.psnr(a.measured_sse))},
+                   {"ms", a.measured_ms},
+                   {"within_budget", a.measured_ms <= a.budget_ms}};
   j["best_single"] = singleJson(a, bestSingle(a, false));
   j["best_single_within_budget"] = singleJson(a, bestSingle(a, true));
   nlohmann::json candidates = nlohmann::json::array();
@@ -162,7 +165,10 @@ nlohmann::json adviceJson(const Advice& a, const std::string& scene_name) {
            {"chosen", a.chosen[r] == int(c)}});
   j["candidates"] = candidates;
   nlohmann::json singles = nlohmann::json::array();
-  for (size_t c = 0; c < a.candidates.size(); ++c) singles.push_back(singleJson(a, int(c)));
+  for (size_t c = 0; c < a.candidates.size(); ++c) {
+    singles.push_back(singleJson(a, int(c)));
+    singles.back()["entry_overhead_ms"] = a.fixed_ms[c];
+  }
   j["single_methods"] = singles;
   return j;
 }

@@ -70,6 +70,11 @@ int runAdvise(AdviseArgs& args) {
       "(budget {:.2f} ms); {}report.html",
       a.psnr(a.predicted_sse), a.predicted_ms, a.psnr(a.measured_sse), a.measured_ms, a.budget_ms,
       dir);
+  if (a.fits && a.measured_ms > a.budget_ms)
+    spdlog::warn(
+        "advise: the composite measured {:.2f} ms, over the budget of {:.2f} ms that "
+        "its parts' times predicted it within ({:.2f} ms)",
+        a.measured_ms, a.budget_ms, a.predicted_ms);
   if (!a.fits)
     throwInput(
         "--budget {}: nothing fits in {:.2f} ms; the cheapest assignment ({}) costs {:.2f} "

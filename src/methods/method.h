@@ -58,6 +58,9 @@ struct MethodSetup {
   ScenePasses& passes;
   const ParamValues& params;
   const FrameSettings& settings;
+  // Made for a composite (`mixed` with several entries): the reflectors it does not own are
+  // drawn by other methods, and `planar` shows curved ones in its mirrored views through probes.
+  bool composite = false;
 };
 
 // What a method renders a frame with.

@@ -65,7 +65,9 @@ TEST_F(MixedMethod, EveryReflectorShowsWhatItsOwnMethodDrawsAlone) {
   FrameRenderer renderer(scene, {180, 128});
   // Reflector ids: position in scene order + 1; the wall mirrors are the first two.
   const std::vector<uint32_t> walls = {1, 2}, curved = {3, 4, 5}, direct = {0};
-  const RenderedFrame planar = renderOnce(renderer, "planar", {});
+  // In a composite planar's mirrored views show the curved reflectors through probes, as
+  // --planar-curved probes does alone.
+  const RenderedFrame planar = renderOnce(renderer, "planar", {{"planar-curved", "probes"}});
   for (const char* curved_method : {"none", "envmap-box", "depthmap"}) {
     SCOPED_TRACE(curved_method);
     const RenderedFrame alone = renderOnce(renderer, curved_method, {});

@@ -48,7 +48,8 @@ class MixedMethod final : public Method {
         throwInput("'{}': method '{}' needs order {}..{} (the frame's is {}; give :order=N)",
                    a.label, a.method, entry.info.min_order, kMaxOrder, settings.order);
       Part part{a.label, a.order, a.reflectors, nullptr};
-      part.method = entry.create({entry.info, setup.gpu, setup.passes, params, settings});
+      part.method = entry.create(
+          {entry.info, setup.gpu, setup.passes, params, settings, assignment.parts.size() > 1});
       parts_.push_back(std::move(part));
     }
   }

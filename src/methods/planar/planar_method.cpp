@@ -2,6 +2,8 @@
 
 #include <memory>
 
+#include "methods/planar/planar_probes.h"
+#include "methods/probe_params.h"
 #include "render/base_colour.h"
 #include "render/mirror_images.h"
 
@@ -9,15 +11,33 @@ namespace mirage {
 
 namespace {
 
+// --planar-curved: what a reflector that is not planar shows in a mirrored view.
+enum class Curved { kAuto, kBase, kProbes };
+constexpr Choice<Curved> kCurved[] = {
+    {"auto", Curved::kAuto}, {"base", Curved::kBase}, {"probes", Curved::kProbes}};
+
+bool probesFor(const MethodSetup& setup) {
+  const Curved c = setup.params.choice<Curved>("planar-curved", kCurved);
+  return c == Curved::kProbes || (c == Curved::kAuto && setup.composite);
+}
+
 class PlanarMethod final : public Method {
  public:
   explicit PlanarMethod(const MethodSetup& setup)
       : program_(gpu::Program::graphics("render/shaders/scene.vert",
                                         "render/shaders/mirror_image.frag")),
         base_program_(baseColourProgram()),
-        planar_(planarReflectors(setup.gpu.scene(), &not_planar_, "planar")) {}
+        planar_(planarReflectors(setup.gpu.scene(), &not_planar_, "planar")) {
+    if (probesFor(setup) && not_planar_ > 0)
+      probes_ = std::make_unique<PlanarProbes>(setup.gpu.scene(), planar_,
+                                               setup.params.integer("envmap-size"));
+  }
 
-  void update(FrameContext&) override {}  // nothing captured: every frame is drawn anew
+  // Nothing captured for the mirrors (every frame is drawn anew); with --planar-curved probes,
+  // the curved reflectors' probes when the scene changed.
+  void update(FrameContext& frame) override {
+    if (probes_) probes_->update(frame, base_program_);
+  }
 
   void render(FrameContext& frame) override {
     frame.drawDirect();
@@ -31,7 +51,8 @@ class PlanarMethod final : public Method {
   std::map<std::string, double> stats() const override {
     return {{"planar_reflectors", double(planar_.size())},
             {"reflectors_not_planar", double(not_planar_)},
-            {"mirrored_views", double(mirrored_views_)}};
+            {"mirrored_views", double(mirrored_views_)},
+            {"cube_captures", probes_ ? double(probes_->captures()) : 0.0}};
   }
 
  private:
@@ -74,9 +95,14 @@ class PlanarMethod final : public Method {
     scissor(rect);
     frame.passes.begin(view, frame.settings);
     // The mirror this view is mirrored in lies on its near plane: never drawn in it. The eye
-    // view shows only this method's own reflectors.
+    // view shows only this method's own reflectors; a mirrored view with a bounce left shows the
+    // curved ones through their probes (--planar-curved probes).
+    const bool through_probes = probes_ && level > 0 && order > 0;
     drawMirrorImages(frame.gpu, shown, program_, base_program_, from,
-                     level == 0 ? frame.own : nullptr);
+                     level == 0       ? frame.own
+                     : through_probes ? &planar_
+                                      : nullptr);
+    if (through_probes) probes_->draw(frame);
   }
 
   static void scissor(ivec4 r) {
@@ -94,6 +120,7 @@ class PlanarMethod final : public Method {
   }
 
   gpu::Program program_, base_program_;
+  std::unique_ptr<PlanarProbes> probes_;  // --planar-curved probes
   int not_planar_ = 0;
   std::vector<int> planar_;
   long mirrored_views_ = 0;
@@ -106,6 +133,14 @@ MethodEntry planarMethodEntry() {
   MethodEntry entry;
   entry.info.name = "planar";
   entry.info.frame_stats = {"mirrored_views"};
+  entry.info.counters = {"cube_captures"};
+  entry.info.params = {
+      ParamSpec::choice<Curved>(
+          "planar-curved", kCurved, Curved::kAuto,
+          "planar: what curved reflectors show in its mirrored views: their base colour, or a "
+          "probe captured at each (as envmap's); auto: probes in a composite (method mixed), "
+          "else the base colour"),
+      envmapSizeParam()};
   entry.info.description =
       "exact planar mirrors by re-rendering the scene from the mirrored eye, the mirror plane as "
       "an oblique near plane, recursing to the reflection order (forward-mapped mirrors paper's "
