@@ -20,9 +20,9 @@ int main(int argc, char** argv) {
   CLI::App app{"mirage: mirror reflections at interactive rates, measured against a ray tracer"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "mirage 0.1.0");
-  std::vector<app::Command> commands = {app::addScenesCommand(app), app::addRenderCommand(app),
+  std::vector<app::Command> commands = {app::addScenesCommand(app),  app::addRenderCommand(app),
                                         app::addCompareCommand(app), app::addBenchCommand(app),
-                                        app::addViewCommand(app), app::addAdviseCommand(app)};
+                                        app::addViewCommand(app),    app::addAdviseCommand(app)};
   // A first word that is no option and no command: name it (CLI11 would only say that a
   // subcommand is required).
   if (argc > 1 && argv[1][0] != '-') {
