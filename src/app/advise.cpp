@@ -33,12 +33,6 @@ const std::vector<GridPoint>& gridPoints() {
   return points;
 }
 
-std::string labelOf(const std::string& method, const std::map<std::string, std::string>& params) {
-  std::string out = method;
-  for (const auto& [name, value] : params) out += ":" + name + "=" + value;
-  return out;
-}
-
 // The frames of one assignment timed at the output size: the median frame and each entry's.
 struct Timed {
   double total_ms = 0.0;
@@ -123,13 +117,7 @@ class Advisor {
     std::optional<Choice> choice =
         chooseWithFixed(options, a.fixed_ms, a.budget_ms - a.base_ms, kMaxAdviseEntries);
     a.fits = choice.has_value();
-    if (!choice) {
-      choice = cheapest(options);
-      std::vector<bool> used(a.candidates.size(), false);
-      for (int c : choice->picked) used[size_t(c)] = true;
-      for (size_t c = 0; c < used.size(); ++c)
-        if (used[c]) choice->cost_ms += a.fixed_ms[c];
-    }
+    if (!choice) choice = cheapest(options, a.fixed_ms);
     a.chosen = choice->picked;
     a.predicted_ms = a.base_ms + choice->cost_ms;
     a.predicted_sse = choice->sse;
@@ -142,14 +130,21 @@ class Advisor {
     }
   }
 
-  // The ray tracer's frames of every view: the reference, and each reflector's pixels in it.
+  // The ray tracer's frames of every view: the reference, and each reflector's pixels in it
+  // (a mask per view and reflector, made once for every candidate's frames).
   void references() {
     pixels_.assign(reflectors_.size(), 0);
     for (const CalibrationView& v : setup_.views) {
       RenderedFrame f = renderQuality("raytrace", {}, "", v);
-      for (uint32_t id : f.ids.pixels())
-        if (id > 0) ++pixels_[id - 1];
-      reference_ids_.push_back(f.ids);
+      std::vector<ReflectorMask> masks;
+      for (size_t r = 0; r < reflectors_.size(); ++r) {
+        IdImage mask = f.ids;
+        for (uint32_t& id : mask.pixels()) id = id == uint32_t(r + 1) ? 1u : 0u;
+        const size_t n = countNonZero(mask);
+        pixels_[r] += n;
+        masks.push_back({std::move(mask), n});
+      }
+      masks_.push_back(std::move(masks));
       reference_.push_back(toDisplay(f.color, setup_.display));
     }
   }
@@ -163,7 +158,7 @@ class Advisor {
   Made made(const std::string& method, std::map<std::string, std::string> params,
             const std::string& assign, int pixel_scale) const {
     for (const auto& [k, value] : setup_.params) params.try_emplace(k, value);
-    if (!assign.empty()) params["assign"] = assign;
+    if (!assign.empty()) params[kAssignParam] = assign;
     FrameSettings settings = setup_.settings;
     settings.pixel_scale = pixel_scale;
     if (auto it = params.find("order"); it != params.end() && method != "mixed") {
@@ -192,10 +187,9 @@ class Advisor {
       const Image shown =
           toDisplay(renderQuality(method, params, assign, setup_.views[v]).color, setup_.display);
       for (size_t r = 0; r < reflectors_.size(); ++r) {
-        IdImage mask = reference_ids_[v];
-        for (uint32_t& id : mask.pixels()) id = id == uint32_t(r + 1) ? 1u : 0u;
-        const size_t n = countNonZero(mask);
-        if (n > 0) sse[r] += meanSquaredError(shown, reference_[v], &mask) * double(n);
+        const ReflectorMask& m = masks_[v][r];
+        if (m.pixels > 0)
+          sse[r] += meanSquaredError(shown, reference_[v], &m.mask) * double(m.pixels);
       }
     }
     return sse;
@@ -233,8 +227,12 @@ class Advisor {
   const AdviseSetup& setup_;
   FrameRenderer quality_, timing_;
   std::vector<int> reflectors_;
+  struct ReflectorMask {
+    IdImage mask;  // 1 where the reference shows the reflector
+    size_t pixels = 0;
+  };
   std::vector<Image> reference_;
-  std::vector<IdImage> reference_ids_;
+  std::vector<std::vector<ReflectorMask>> masks_;  // [view][reflector]
   std::vector<size_t> pixels_;
   Progress* progress_ = nullptr;
 };
@@ -260,7 +258,7 @@ std::vector<Candidate> candidateGrid(const std::vector<std::string>& methods) {
   for (const std::string& m : methods) {
     out.push_back({m, {}, m});
     for (const GridPoint& g : gridPoints())
-      if (g.method == m) out.push_back({m, g.params, labelOf(m, g.params)});
+      if (g.method == m) out.push_back({m, g.params, methodText(m, g.params)});
   }
   return out;
 }

@@ -23,6 +23,18 @@ Choice summed(const std::vector<std::vector<Option>>& options, std::vector<int> 
   return c;
 }
 
+// The fixed costs of the candidates `picked` uses, each once.
+double fixedOfUsed(const std::vector<int>& picked, const std::vector<double>& fixed_ms) {
+  std::vector<bool> used(fixed_ms.size(), false);
+  double out = 0.0;
+  for (int c : picked) {
+    if (used[size_t(c)]) continue;
+    used[size_t(c)] = true;
+    out += fixed_ms[size_t(c)];
+  }
+  return out;
+}
+
 }  // namespace
 
 std::optional<Choice> chooseWithin(const std::vector<std::vector<Option>>& options,
@@ -58,7 +70,8 @@ std::optional<Choice> chooseWithin(const std::vector<std::vector<Option>>& optio
   return summed(options, std::move(picked));
 }
 
-Choice cheapest(const std::vector<std::vector<Option>>& options) {
+Choice cheapest(const std::vector<std::vector<Option>>& options,
+                const std::vector<double>& fixed_ms) {
   std::vector<int> picked;
   for (const auto& list : options) {
     MIRAGE_CHECK(!list.empty());
@@ -67,7 +80,9 @@ Choice cheapest(const std::vector<std::vector<Option>>& options) {
       if (list[o].cost_ms < list[size_t(k)].cost_ms) k = int(o);
     picked.push_back(k);
   }
-  return summed(options, std::move(picked));
+  Choice c = summed(options, std::move(picked));
+  if (!fixed_ms.empty()) c.cost_ms += fixedOfUsed(c.picked, fixed_ms);
+  return c;
 }
 
 namespace {
@@ -101,17 +116,10 @@ std::optional<Choice> chooseWithFixed(const std::vector<std::vector<Option>>& op
       for (int c : u) restricted[r].push_back(options[r][size_t(c)]);
     std::optional<Choice> within = chooseWithin(restricted, budget_ms - fixed);
     if (!within) return;
-    Choice choice;
-    std::vector<bool> used(size_t(n), false);
-    for (size_t r = 0; r < options.size(); ++r) {
-      const int c = u[size_t(within->picked[r])];
-      choice.picked.push_back(c);
-      choice.cost_ms += options[r][size_t(c)].cost_ms;
-      choice.sse += options[r][size_t(c)].sse;
-      used[size_t(c)] = true;
-    }
-    for (int c = 0; c < n; ++c)
-      if (used[size_t(c)]) choice.cost_ms += fixed_ms[size_t(c)];
+    std::vector<int> picked;
+    for (int k : within->picked) picked.push_back(u[size_t(k)]);
+    Choice choice = summed(options, std::move(picked));
+    choice.cost_ms += fixedOfUsed(choice.picked, fixed_ms);
     if (!best || choice.sse < best->sse ||
         (choice.sse == best->sse && choice.cost_ms < best->cost_ms))
       best = std::move(choice);

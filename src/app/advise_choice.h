@@ -26,8 +26,11 @@ struct Choice {
 // `budget_ms`; empty when even the cheapest options exceed it. Every reflector needs one option.
 std::optional<Choice> chooseWithin(const std::vector<std::vector<Option>>& options,
                                    double budget_ms);
-// The cheapest option of every reflector (what to say when nothing fits).
-Choice cheapest(const std::vector<std::vector<Option>>& options);
+// The cheapest option of every reflector (what to say when nothing fits). With `fixed_ms`
+// (option c of every reflector is candidate c, as for chooseWithFixed), its cost counts the fixed
+// cost of each candidate it uses.
+Choice cheapest(const std::vector<std::vector<Option>>& options,
+                const std::vector<double>& fixed_ms = {});
 
 // The same choice where option c of every reflector is candidate c, and a candidate costs
 // `fixed_ms[c]` once if any reflector takes it (an entry's own overhead) besides each

@@ -26,8 +26,7 @@ struct AdviseArgs : RenderingArgs {
 std::vector<std::string> assignableMethods(const std::string& list) {
   std::vector<std::string> out;
   for (const std::string& name : parseMethodList(list)) {
-    const MethodInfo& info = findMethod(name).info;
-    if (info.gpu && !info.needs_assignment)
+    if (assignable(findMethod(name).info))
       out.push_back(name);
     else if (list != "all")
       throwInput("--methods: '{}' cannot be assigned to reflectors (it draws whole frames)", name);

@@ -56,7 +56,7 @@ AssignedPart checkedPart(const ReflectionRule& rule) {
   } catch (const InputError& e) {
     throwInput("{}: {}", who, e.what());
   }
-  if (!entry->info.gpu || rule.method == "mixed")
+  if (!assignable(entry->info))
     throwInput("{}: method '{}' cannot be assigned to reflectors (it draws whole frames)", who,
                rule.method);
   part.method = rule.method;
@@ -112,10 +112,20 @@ std::vector<ReflectionRule> parseAssignText(const std::string& text) {
   return rules;
 }
 
-std::string ruleText(const ReflectionRule& rule) {
-  std::string out = fmt::format("{}={}", fmt::join(rule.reflectors, ","), rule.method);
-  for (const auto& [name, value] : rule.params) out += ":" + name + "=" + value;
+bool assignable(const MethodInfo& info) {
+  return info.gpu && !info.needs_assignment;
+}
+
+std::string methodText(const std::string& method,
+                       const std::map<std::string, std::string>& params) {
+  std::string out = method;
+  for (const auto& [name, value] : params) out += ":" + name + "=" + value;
   return out;
+}
+
+std::string ruleText(const ReflectionRule& rule) {
+  return fmt::format("{}={}", fmt::join(rule.reflectors, ","),
+                     methodText(rule.method, rule.params));
 }
 
 std::string assignText(const std::vector<ReflectionRule>& rules) {

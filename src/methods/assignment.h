@@ -11,6 +11,18 @@
 
 namespace mirage {
 
+struct MethodInfo;
+
+// Method `mixed`'s parameter that holds an assignment as `--assign` text.
+inline constexpr const char* kAssignParam = "assign";
+
+// Whether a method can draw some reflectors of a frame (not `raytrace` or `mixed`, which draw
+// whole frames).
+bool assignable(const MethodInfo& info);
+
+// "depthmap:srdm-m=16": a method and parameter values as an entry of `--assign` writes them.
+std::string methodText(const std::string& method, const std::map<std::string, std::string>& params);
+
 // One entry of a resolved assignment: a method and what it draws.
 struct AssignedPart {
   std::string method;

@@ -9,15 +9,9 @@ namespace mirage {
 
 namespace {
 
-const std::string kAssign = "assign";
-
 std::string assignValue(const ViewerState& state) {
-  auto it = state.params.find(kAssign);
+  auto it = state.params.find(kAssignParam);
   return it == state.params.end() ? std::string() : it->second;
-}
-
-bool assignable(const MethodInfo& info) {
-  return info.gpu && !info.needs_assignment;
 }
 
 }  // namespace
@@ -33,7 +27,7 @@ void seedAssignment(const Scene& scene, ViewerState& state, const std::string& p
       !scene.reflections.empty())
     return;
   const bool keep = !previous.empty() && assignable(findMethod(previous).info);
-  state.params[kAssign] = "*=" + (keep ? previous : std::string("envmap"));
+  state.params[kAssignParam] = "*=" + (keep ? previous : std::string("envmap"));
 }
 
 void reflectorTechniqueControl(const Scene& scene, ViewerState& state) {
@@ -52,7 +46,8 @@ void reflectorTechniqueControl(const Scene& scene, ViewerState& state) {
     if (!assignable(entry.info)) continue;
     const std::string& name = entry.info.name;
     if (!ImGui::Selectable(name.c_str(), name == current) || name == current) continue;
-    state.params[kAssign] = assignText(reassign(scene, viewerRules(scene, state), instance, name));
+    state.params[kAssignParam] =
+        assignText(reassign(scene, viewerRules(scene, state), instance, name));
     state.method = "mixed";
     state.method_changed = true;
   }

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "methods/assignment.h"
 #include "methods/frame.h"
 #include "scene/builtin_scenes.h"
 #include "support/gl_test.h"
@@ -49,7 +50,7 @@ TEST_F(MixedMethod, OneMethodForEveryReflectorIsThatMethodsFrameBitForBit) {
     const Scene scene = makeBuiltinScene(scene_name);
     FrameRenderer renderer(scene, {96, 64});
     for (const MethodEntry& entry : methodRegistry()) {
-      if (!entry.info.gpu || entry.info.needs_assignment) continue;
+      if (!assignable(entry.info)) continue;
       SCOPED_TRACE(std::string(scene_name) + " " + entry.info.name);
       const RenderedFrame alone = renderOnce(renderer, entry.info.name, {});
       const RenderedFrame mixed =

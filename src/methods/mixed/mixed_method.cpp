@@ -19,7 +19,7 @@ struct Part {
 };
 
 std::vector<ReflectionRule> rulesOf(const MethodSetup& setup) {
-  const std::string& text = setup.params.text("assign");
+  const std::string& text = setup.params.text(kAssignParam);
   if (!text.empty()) return parseAssignText(text);
   const Scene& scene = setup.gpu.scene();
   if (scene.reflections.empty())
@@ -130,7 +130,7 @@ MethodEntry mixedMethodEntry(std::span<const MethodEntry> methods) {
   entry.info.needs_assignment = true;
   entry.info.params = mergedParams(methods);
   entry.info.params.push_back(ParamSpec::text(
-      "assign", "NAMES=METHOD[:PARAM=VALUE...];...",
+      kAssignParam, "NAMES=METHOD[:PARAM=VALUE...];...",
       "method mixed: which method draws which reflector, e.g. "
       "'mirror*=planar;ball=depthmap:srdm-m=16;*=envmap-box' (names: reflector or material "
       "names or globs; '*' the rest; default: the scene's \"reflections\")"));
