@@ -1,5 +1,7 @@
 #include "gpu/texture.h"
 
+#include "gpu/framebuffer.h"
+
 #include <algorithm>
 #include <bit>
 
@@ -163,6 +165,26 @@ void Texture::downloadLayer(int level, int layer, GLenum format, GLenum type, vo
 
 void Texture::generateMipmaps() {
   glGenerateTextureMipmap(id());
+}
+
+void Texture::generateMipmaps(int first_layer, int layers) {
+  if (levels_ <= 1) return;
+  if (first_layer == 0 && layers == layers_) return generateMipmaps();
+  if (first_layer < 0 || layers < 0 || first_layer + layers > layers_)
+    throwRuntime("mip chain of layers {}..{} of a {}-layer texture", first_layer,
+                 first_layer + layers - 1, layers_);
+  // Each level from the one above by a linear 2:1 blit, layer by layer (a texture view per
+  // layer, as glGenerateTextureMipmap would need, costs llvmpipe far more than the blits).
+  Framebuffer read, draw;
+  for (int layer = first_layer; layer < first_layer + layers; ++layer)
+    for (int level = 1; level < levels_; ++level) {
+      const ivec2 from = glm::max(size_ >> (level - 1), ivec2(1));
+      const ivec2 to = glm::max(size_ >> level, ivec2(1));
+      read.attachColor(0, *this, level - 1, layer);
+      draw.attachColor(0, *this, level, layer);
+      glBlitNamedFramebuffer(read.id(), draw.id(), 0, 0, from.x, from.y, 0, 0, to.x, to.y,
+                             GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    }
 }
 
 void Texture::setFilter(GLenum min_filter, GLenum mag_filter) {

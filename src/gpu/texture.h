@@ -48,6 +48,11 @@ class Texture {
   void downloadLayer(int level, int layer, GLenum format, GLenum type, void* out,
                      size_t bytes) const;
   void generateMipmaps();
+  // The mip chain of `layers` layers from `first_layer` only (of an array; a cube-map array's
+  // layers are its faces): a moving scene re-captures a few layers of a large array, and
+  // rebuilding every layer's chain would cost more than they did. Linear 2:1 blits, level by
+  // level; glGenerateTextureMipmap's filter may differ in the last bits.
+  void generateMipmaps(int first_layer, int layers);
   void setFilter(GLenum min_filter, GLenum mag_filter);
   void setWrap(GLenum wrap);
   void bind(GLuint unit) const { glBindTextureUnit(unit, id()); }

@@ -1,5 +1,8 @@
 #include "methods/depthmap/depthmap_capture.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/error.h"
 #include "core/timer.h"
 
@@ -60,39 +63,55 @@ void DepthMapCapture::allocate(int maps) {
 }
 
 int DepthMapCapture::update(GpuScene& gpu, ScenePasses& passes,
-                            const std::vector<DepthMapSpec>& specs, const FrameSettings& settings) {
+                            const std::vector<DepthMapSpec>& specs, const FrameSettings& settings,
+                            const RecapturePolicy& policy) {
   allocate(int(specs.size()));
   const Light& light = gpu.light();
-  int colour_captures = 0;
+  std::vector<ColorKey> keys(specs.size());
+  std::vector<bool> depth_ok(specs.size());
+  std::vector<Drift> drift(specs.size());
   for (size_t i = 0; i < specs.size(); ++i) {
     const DepthMapSpec& spec = specs[i];
     const mat4& model = gpu.instanceMatrix(spec.instance);
     // The light as the object sees it: a translation changes nothing, a rotation may.
     const vec3 local_light = glm::normalize(glm::inverse(mat3(model)) * light.direction);
     // A normal map depends on nothing the key holds.
-    const ColorKey key =
-        spec.reflector ? ColorKey{} : ColorKey{local_light, light.color, light.ambient};
+    keys[i] = spec.reflector ? ColorKey{} : ColorKey{local_light, light.color, light.ambient};
     // A deforming object's maps are redrawn when its shape changes (a rigid motion moves their
-    // cameras with it and redraws nothing).
-    const uint64_t shape = gpu.shapeVersion(spec.instance);
-    const bool depth_ok =
-        depth_valid_[i] && sameSpec(built_for_[i], spec) && built_shape_[i] == shape;
-    const bool colour_ok = depth_ok && color_valid_[i] && color_keys_[i] == key;
-    if (colour_ok) continue;
-    render(gpu, passes, spec, int(i), !depth_ok, settings);
-    color_keys_[i] = key;
+    // cameras with it and redraws nothing): the depth must match, whatever the budget.
+    depth_ok[i] = depth_valid_[i] && sameSpec(built_for_[i], spec) &&
+                  built_shape_[i] == gpu.shapeVersion(spec.instance);
+    drift[i].invalid = !depth_ok[i] || !color_valid_[i];
+    // The colour is re-shaded once the light, as the object sees it, turned beyond the
+    // tolerance (a change of its colour is beyond every tolerance).
+    const ColorKey& old = color_keys_[i];
+    if (old.light_dir != keys[i].light_dir)
+      drift[i].angle =
+          std::acos(std::clamp(glm::dot(old.light_dir, keys[i].light_dir), -1.0f, 1.0f));
+    drift[i].unmeasured = old.light_color != keys[i].light_color || old.ambient != keys[i].ambient;
+  }
+  const std::vector<int> due = chooseRecaptures(drift, policy);
+  pending_ = int(chooseRecaptures(drift, {policy.angle_degrees, policy.texels, 0}).size()) -
+             int(due.size());
+  for (int k : due) {
+    const size_t i = size_t(k);
+    render(gpu, passes, specs[i], k, !depth_ok[i], settings);
+    color_keys_[i] = keys[i];
     color_valid_[i] = true;
-    ++colour_captures;
-    if (!depth_ok) {
-      build(int(i), depthMapView(spec, model, options_));
-      built_for_[i] = spec;
-      built_shape_[i] = shape;
+    if (!depth_ok[i]) {
+      build(k, depthMapView(specs[i], gpu.instanceMatrix(specs[i].instance), options_));
+      built_for_[i] = specs[i];
+      built_shape_[i] = gpu.shapeVersion(specs[i].instance);
       depth_valid_[i] = true;
     }
   }
-  if (colour_captures > 0) colors_.generateMipmaps();
-  color_captures_ += colour_captures;
-  return colour_captures;
+  // The re-shaded layers' mip chains: all at once when most are new.
+  if (due.size() * 2 > size_t(colors_.layers()))
+    colors_.generateMipmaps();
+  else
+    for (int k : due) colors_.generateMipmaps(k, 1);
+  color_captures_ += long(due.size());
+  return int(due.size());
 }
 
 void DepthMapCapture::render(GpuScene& gpu, ScenePasses& passes, const DepthMapSpec& spec,

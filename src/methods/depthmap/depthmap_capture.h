@@ -19,6 +19,7 @@
 #include "methods/depthmap/srdm.h"
 #include "methods/depthmap/srdm_gpu_builder.h"
 #include "render/gpu_scene.h"
+#include "render/recapture.h"
 #include "render/scene_passes.h"
 
 namespace mirage {
@@ -32,9 +33,11 @@ class DepthMapCapture {
   DepthMapCapture(const DepthMapOptions& options, const SrdmSettings& srdm,
                   SrdmBuilder builder = SrdmBuilder::kCpu);
 
-  // Captures and builds what changed; returns the number of colour captures made.
+  // Captures and builds what changed: a map whose depth no longer fits (a new spec, a new shape)
+  // at once, a colour map once the light turned beyond `policy`'s angle, within its budget.
+  // Returns the number of colour captures made.
   int update(GpuScene& gpu, ScenePasses& passes, const std::vector<DepthMapSpec>& specs,
-             const FrameSettings& settings);
+             const FrameSettings& settings, const RecapturePolicy& policy);
 
   // RGBA16F, premultiplied, mip-mapped: colour, or a reflector's object-space normal.
   const gpu::Texture& colors() const { return colors_; }
@@ -42,6 +45,8 @@ class DepthMapCapture {
   const gpu::Texture& srdms() const { return srdms_; }    // RGBA32F, maps x n layers
 
   long colorCaptures() const { return color_captures_; }
+  // Colour maps beyond the tolerance that the budget left for later frames.
+  int pending() const { return pending_; }
   long depthCaptures() const { return depth_captures_; }
   long srdmBuilds() const { return srdm_builds_; }
   // The last build's wall time; the GPU builder's includes waiting for it.
@@ -64,6 +69,7 @@ class DepthMapCapture {
   gpu::Framebuffer fbo_;
   gpu::Program program_, normal_program_;
   std::vector<ColorKey> color_keys_;
+  int pending_ = 0;
   std::vector<bool> color_valid_, depth_valid_;
   std::vector<DepthMapSpec> built_for_;
   std::vector<uint64_t> built_shape_;  // the object's shape version at the depth map's build

@@ -6,6 +6,7 @@
 #include "methods/depthmap/depthmap_capture.h"
 #include "methods/depthmap/depthmap_shared.h"
 #include "methods/impostor/billboard_stage.h"
+#include "methods/recapture_params.h"
 #include "render/base_colour.h"
 
 namespace mirage {
@@ -54,6 +55,7 @@ class DepthMapMethod final : public Method {
         specs_(placeDepthMaps(setup.gpu.scene(), options_)),
         stage_(stageOptions(setup.params, specs_)),
         capture_(options_, srdm_, setup.params.choice<SrdmBuilder>("srdm-builder", kSrdmBuilders)),
+        recapture_(billboardRecapture(setup.params)),
         last_bounce_reflective_(lastBounceReflective(setup.params)),
         program_(gpu::Program::graphics("render/shaders/scene.vert",
                                         "methods/depthmap/depthmap.frag",
@@ -63,11 +65,11 @@ class DepthMapMethod final : public Method {
   void update(FrameContext& frame) override {
     stage_.update(frame);
     GpuScene& gpu = frame.gpu;
-    if (updated_ && updated_version_ == gpu.version()) {
+    if (updated_ && updated_version_ == gpu.version() && capture_.pending() == 0) {
       last_captures_ = 0;
       return;
     }
-    last_captures_ = capture_.update(gpu, frame.passes, specs_, frame.settings);
+    last_captures_ = capture_.update(gpu, frame.passes, specs_, frame.settings, recapture_);
     // The cameras follow their objects every time the scene moves; nothing is rebuilt for it.
     std::vector<shading::DepthMapData> data;
     for (size_t i = 0; i < specs_.size(); ++i) {
@@ -139,6 +141,7 @@ class DepthMapMethod final : public Method {
   std::vector<DepthMapSpec> specs_;
   BillboardStage stage_;
   DepthMapCapture capture_;
+  RecapturePolicy recapture_;  // the colour maps' re-shading, as the billboards'
   bool last_bounce_reflective_;
   gpu::Program program_, base_program_;
   gpu::Buffer maps_;

@@ -4,8 +4,9 @@
 
 #include "gpu/buffer.h"
 #include "methods/probe_params.h"
+#include "methods/recapture_params.h"
 #include "render/base_colour.h"
-#include "render/cube_capture.h"
+#include "render/probe_array.h"
 
 namespace mirage {
 
@@ -31,21 +32,19 @@ class EnvmapMethod final : public Method {
         program_(gpu::Program::graphics("render/shaders/scene.vert", "methods/envmap/envmap.frag",
                                         shaderDefines(variant))),
         base_program_(baseColourProgram()),
-        diffuse_(setup.gpu.scene().diffuseInstances()) {}
+        diffuse_(setup.gpu.scene().diffuseInstances()),
+        reflectors_(setup.gpu.scene().reflectorInstances()),
+        recapture_(infinite_ ? RecapturePolicy{} : probeRecapture(setup.params)) {}
 
   void update(FrameContext& frame) override {
-    if (infinite_) return;
-    int order = frame.settings.order;
-    bool mip = frame.settings.mip;
-    // The probes show every diffuse object, the other reflectors and the light.
-    std::vector<uint64_t> key = frame.gpu.probeKey(diffuse_);
-    if (captured_ && captured_key_ == key && captured_order_ == order && captured_mip_ == mip)
-      return;
-    capture(frame, order, mip);
-    captured_ = true;
-    captured_key_ = std::move(key);
-    captured_order_ = order;
-    captured_mip_ = mip;
+    if (infinite_ || reflectors_.empty() || frame.settings.order == 0) return;
+    const int levels = reflectors_.size() > 1 ? frame.settings.order : 1;
+    if (int(levels_.size()) != levels) {
+      levels_.clear();
+      for (int l = 0; l < levels; ++l) levels_.push_back(std::make_unique<ProbeArray>(size_));
+    }
+    for (auto& level : levels_) level->allocate(int(reflectors_.size()), frame.settings.mip);
+    capture(frame);
   }
 
   void render(FrameContext& frame) override {
@@ -55,7 +54,7 @@ class EnvmapMethod final : public Method {
       frame.drawOwnReflectors(base_program_);
       return;
     }
-    if (!infinite_) probes_[final_].bind(MIRAGE_UNIT_METHOD);
+    if (!infinite_) levels_.back()->bind(MIRAGE_UNIT_METHOD);
     if (variant_ == Variant::kBox)
       centres_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_METHOD_SSBO);
     frame.drawOwnReflectors(program_);
@@ -67,7 +66,8 @@ class EnvmapMethod final : public Method {
 
   std::map<std::string, double> stats() const override {
     std::map<std::string, double> s = {{"cube_captures", double(cube_captures_)},
-                                       {"capture_passes", double(capture_passes_)}};
+                                       {"capture_passes", double(capture_passes_)},
+                                       {"probes_pending", double(pending_)}};
     if (variant_ == Variant::kBox) {
       const vec3 e = box_.extent();
       s["proxy_box_x"] = e.x;
@@ -78,51 +78,76 @@ class EnvmapMethod final : public Method {
   }
 
  private:
-  // Renders every reflector's probe; with several reflectors and order K, K passes, each
-  // showing the other reflectors with the probes of the pass before.
-  void capture(FrameContext& frame, int order, bool mip) {
-    const Scene& scene = frame.gpu.scene();
-    std::vector<int> reflectors = scene.reflectorInstances();
-    if (reflectors.empty() || order == 0) return;
-    int levels = mip ? gpu::Texture::fullMipLevels(size_) : 1;
-    for (auto& probe : probes_)
-      if (probe.layers() != 6 * int(reflectors.size()) || probe.levels() != levels)
-        probe = gpu::Texture::createCubeArray(GL_RGBA16F, size_, int(reflectors.size()), levels);
-    if (!cube_) cube_ = std::make_unique<CubeCapture>(size_);
+  // Level l of the probes shows the other reflectors through level l - 1 (level 0: at their base
+  // colour), so the last of K levels holds K bounces. Every (level, probe) is one capture, made
+  // again once what it shows drifted beyond the tolerances: the most drifted first, within the
+  // budget, and a level's captures before the next level's within the frame.
+  void capture(FrameContext& frame) {
+    const size_t count = reflectors_.size();
+    std::vector<vec3> centres;
+    std::vector<std::vector<int>> shown(count), shown_deep(count);
+    for (size_t r = 0; r < count; ++r) {
+      centres.push_back(frame.gpu.instanceBounds(reflectors_[r]).center());
+      shown[r] = shownByProbe(diffuse_, reflectors_, reflectors_[r]);
+      // Deeper levels see the probe's own reflector too, in the others' probes.
+      shown_deep[r] = shownByProbe(diffuse_, reflectors_, -1);
+    }
+    std::vector<Drift> drift;
+    for (size_t l = 0; l < levels_.size(); ++l)
+      for (const Drift& d : levels_[l]->drifts(frame.gpu, centres, l == 0 ? shown : shown_deep))
+        drift.push_back(d);
+    std::vector<int> due = chooseRecaptures(drift, recapture_);
+    pending_ =
+        int(chooseRecaptures(drift, {recapture_.angle_degrees, recapture_.texels, 0}).size()) -
+        int(due.size());
+    if (!due.empty()) captureDue(frame, due, centres, shown, shown_deep);
+    for (auto& level : levels_) {
+      level->finish();
+      level->nextFrame();
+    }
+    if (variant_ == Variant::kBox) setUpBox(frame, *levels_.back());
+  }
 
-    Bounds3 bounds = scene.bounds(frame.gpu.time());
-    float radius = std::max(bounds.radius(), 1e-3f);
-    float near_plane = 1e-3f * radius, far_plane = 100.0f * radius;
-    if (variant_ == Variant::kBox) setUpBox(frame, reflectors);
-    int passes = reflectors.size() > 1 ? order : 1;
-    for (int pass = 0; pass < passes; ++pass) {
-      int write = pass % 2, read = 1 - write;
-      const gpu::Program& others = pass == 0 ? base_program_ : program_;
-      if (pass > 0) probes_[read].bind(MIRAGE_UNIT_METHOD);
-      for (size_t r = 0; r < reflectors.size(); ++r) {
-        int instance = reflectors[r];
-        vec3 center = frame.gpu.instanceBounds(instance).center();
-        cube_->capture(probes_[write], int(r), center, near_plane, far_plane, [&](const View& v) {
-          frame.passes.begin(v, frame.settings);
-          frame.passes.drawDirect();
-          frame.passes.drawReflectors(others, instance);
-        });
-        ++cube_captures_;
+  // Captures the due (level, probe) units, a level's before the next level's.
+  void captureDue(FrameContext& frame, std::vector<int> due, const std::vector<vec3>& centres,
+                  const std::vector<std::vector<int>>& shown,
+                  const std::vector<std::vector<int>>& shown_deep) {
+    const int count = int(reflectors_.size());
+    std::stable_sort(due.begin(), due.end(), [&](int a, int b) { return a / count < b / count; });
+    const float radius = std::max(frame.gpu.scene().bounds(frame.gpu.time()).radius(), 1e-3f);
+    int last_level = -1;
+    for (int unit : due) {
+      const int l = unit / count, r = unit % count;
+      if (l != last_level && l > 0) {
+        levels_[size_t(l - 1)]->finish();
+        levels_[size_t(l - 1)]->bind(MIRAGE_UNIT_METHOD);
+        // The box lookups of this level read the level below, captured where it was.
+        if (variant_ == Variant::kBox) setUpBox(frame, *levels_[size_t(l - 1)]);
       }
-      if (mip) probes_[write].generateMipmaps();
-      final_ = write;
-      ++capture_passes_;
+      if (l != last_level) ++capture_passes_;
+      last_level = l;
+      const gpu::Program& others = l == 0 ? base_program_ : program_;
+      levels_[size_t(l)]->capture(frame.gpu, r, centres[size_t(r)],
+                                  (l == 0 ? shown : shown_deep)[size_t(r)], 1e-3f * radius,
+                                  100.0f * radius, [&](int, const View& v) {
+                                    frame.passes.begin(v, frame.settings);
+                                    frame.passes.drawDirect();
+                                    frame.passes.drawReflectors(others, reflectors_[size_t(r)]);
+                                  });
+      ++cube_captures_;
     }
   }
 
   // The proxy of `envmap-box`: the bounds of the diffuse objects (the room), grown to hold every
-  // probe centre, and the probe centres for the shader.
-  void setUpBox(FrameContext& frame, const std::vector<int>& reflectors) {
+  // probe centre, and the probe centres for the shader: where each probe of `level` (the one
+  // looked up) was captured (in a moving scene, within the tolerances of where its reflector is
+  // now).
+  void setUpBox(FrameContext& frame, const ProbeArray& level) {
     box_ = Bounds3{};
     for (int i : diffuse_) box_.extend(frame.gpu.instanceBounds(i));
     std::vector<vec4> centres;
-    for (int instance : reflectors) {
-      vec3 c = frame.gpu.instanceBounds(instance).center();
+    for (size_t r = 0; r < reflectors_.size(); ++r) {
+      const vec3 c = level.centre(int(r), frame.gpu.instanceBounds(reflectors_[r]).center());
       centres.push_back(vec4(c, 1.0f));
       box_.extend(c);
     }
@@ -139,15 +164,14 @@ class EnvmapMethod final : public Method {
   int size_;
   bool sphere_proxy_;
   gpu::Program program_, base_program_;
-  gpu::Texture probes_[2];
-  gpu::Buffer centres_;  // envmap-box: vec4 probe centre per reflector
-  Bounds3 box_;          // envmap-box: the proxy
-  int final_ = 0;
-  std::unique_ptr<CubeCapture> cube_;
-  bool captured_ = false, captured_mip_ = false;
-  std::vector<uint64_t> captured_key_;
+  // Level l of every reflector's probe; the frame looks up the last.
+  std::vector<std::unique_ptr<ProbeArray>> levels_;
+  gpu::Buffer centres_;       // envmap-box: vec4 probe centre per reflector
+  Bounds3 box_;               // envmap-box: the proxy
   std::vector<int> diffuse_;  // every diffuse instance: what the probes show besides reflectors
-  int captured_order_ = -1;
+  std::vector<int> reflectors_;
+  RecapturePolicy recapture_;
+  int pending_ = 0;
   long cube_captures_ = 0, capture_passes_ = 0;
 };
 
@@ -160,6 +184,7 @@ MethodEntry envmapMethodEntry() {
   entry.info.description =
       "a cube map captured at each reflector's centre, looked up by direction (reflection probe)";
   entry.info.params = {envmapSizeParam()};
+  for (ParamSpec& spec : probeRecaptureParams()) entry.info.params.push_back(std::move(spec));
   entry.create = factoryOf<EnvmapMethod>(Variant::kProbes);
   return entry;
 }
@@ -172,6 +197,7 @@ MethodEntry envmapBoxMethodEntry() {
       "the reflection probes looked up through a box proxy of the room (parallax-corrected cube "
       "map)";
   entry.info.params = {envmapSizeParam(), probeProxyParam()};
+  for (ParamSpec& spec : probeRecaptureParams()) entry.info.params.push_back(std::move(spec));
   entry.create = factoryOf<EnvmapMethod>(Variant::kBox);
   return entry;
 }

@@ -12,8 +12,9 @@
 #include "methods/hybrid/point_store.h"
 #include "methods/hybrid/splat_visibility.h"
 #include "methods/probe_params.h"
+#include "methods/recapture_params.h"
 #include "render/base_colour.h"
-#include "render/cube_capture.h"
+#include "render/probe_array.h"
 
 namespace mirage {
 
@@ -67,7 +68,8 @@ class HybridMethod final : public Method {
         splat_size_(setup.params.integer("splat-size") * pixel_scale_),
         min_pixels_(minSubPixels(setup.params.integer("hybrid-min-pixels"), pixel_scale_)),
         lod_density_(float(setup.params.real("hybrid-lod")) / float(pixel_scale_ * pixel_scale_)),
-        probe_size_(setup.params.integer("envmap-size")),
+        probes_(setup.params.integer("envmap-size")),
+        recapture_(probeRecapture(setup.params)),
         splat_program_(gpu::Program::compute("methods/hybrid/hybrid_splat.comp")),
         resolve_program_(
             gpu::Program::graphics("render/shaders/scene.vert", "methods/hybrid/hybrid.frag")),
@@ -92,12 +94,7 @@ class HybridMethod final : public Method {
     // The background probes show the objects without points, the reflectors and the light: a
     // point-sampled object that moves changes none of them (its tree lives in object space, and
     // the query moves instead).
-    std::vector<uint64_t> key = frame.gpu.probeKey(background_);
-    if (captured_ && captured_key_ == key && captured_mip_ == frame.settings.mip) return;
     captureBackground(frame);
-    captured_ = true;
-    captured_key_ = std::move(key);
-    captured_mip_ = frame.settings.mip;
   }
 
   void render(FrameContext& frame) override {
@@ -136,7 +133,8 @@ class HybridMethod final : public Method {
   std::map<std::string, double> stats() const override {
     std::map<std::string, double> s;
     s["points"] = double(store_.pointCount());
-    s["background_captures"] = double(captures_);
+    s["background_captures"] = double(probes_.captures());
+    s["probes_pending"] = double(probes_.pending());
     s["point_sets"] = double(store_.clouds().size());
     s["point_sample_ms"] = store_.sampleMs();
     s["kd_build_ms"] = store_.buildMs();
@@ -205,29 +203,25 @@ class HybridMethod final : public Method {
   // The background every reflector shows where no point lands: a cube map at its centre of
   // everything but the point-sampled objects and itself, other reflectors in base colour.
   void captureBackground(FrameContext& frame) {
-    const int levels = frame.settings.mip ? gpu::Texture::fullMipLevels(probe_size_) : 1;
-    if (probes_.layers() != 6 * int(reflectors_.size()) || probes_.levels() != levels)
-      probes_ = gpu::Texture::createCubeArray(GL_RGBA16F, probe_size_,
-                                              std::max<int>(1, int(reflectors_.size())), levels);
-    if (!cube_) cube_ = std::make_unique<CubeCapture>(probe_size_);
     // Near and far from the bounds of what the probes show, so that the capture depends on
     // nothing else (a point-sampled object that moves leaves it exactly as it was).
-    Bounds3 shown;
+    Bounds3 bounds;
     for (const std::vector<int>* list : {&background_, &reflectors_})
-      for (int i : *list) shown.extend(frame.gpu.instanceBounds(i));
-    const float radius = std::max(shown.empty() ? 1.0f : shown.radius(), 1e-3f);
-    for (size_t r = 0; r < reflectors_.size(); ++r) {
-      const int instance = reflectors_[r];
-      const vec3 centre = frame.gpu.instanceBounds(instance).center();
-      cube_->capture(probes_, int(r), centre, 1e-3f * radius, 100.0f * radius, [&](const View& v) {
-        frame.passes.begin(v, frame.settings);
-        frame.passes.drawBackground();
-        frame.passes.drawDiffuseInstances(background_);
-        frame.passes.drawReflectors(base_program_, instance);
-      });
-      ++captures_;
+      for (int i : *list) bounds.extend(frame.gpu.instanceBounds(i));
+    const float radius = std::max(bounds.empty() ? 1.0f : bounds.radius(), 1e-3f);
+    std::vector<vec3> centres;
+    std::vector<std::vector<int>> shown;
+    for (int instance : reflectors_) {
+      centres.push_back(frame.gpu.instanceBounds(instance).center());
+      shown.push_back(shownByProbe(background_, reflectors_, instance));
     }
-    if (frame.settings.mip) probes_.generateMipmaps();
+    probes_.update(frame.gpu, int(reflectors_.size()), frame.settings.mip, centres, shown,
+                   recapture_, 1e-3f * radius, 100.0f * radius, [&](int r, const View& v) {
+                     frame.passes.begin(v, frame.settings);
+                     frame.passes.drawBackground();
+                     frame.passes.drawDiffuseInstances(background_);
+                     frame.passes.drawReflectors(base_program_, reflectors_[size_t(r)]);
+                   });
   }
 
   // Draws the reflectors into the frame's depth and a triangle-ID image, reads the IDs back and
@@ -331,12 +325,12 @@ class HybridMethod final : public Method {
   bool first_only_, keep_backfaces_, eye_scaled_;
   int pixel_scale_, splat_size_, min_pixels_;
   float lod_density_;
-  int probe_size_;
+  ProbeArray probes_;  // the background, one cube per reflector
+  RecapturePolicy recapture_;
   gpu::Program splat_program_, resolve_program_, id_program_, base_program_;
   SplatVisibility visibility_;
   std::vector<int> reflectors_, background_;
-  gpu::Texture probes_, ids_;
-  std::unique_ptr<CubeCapture> cube_;
+  gpu::Texture ids_;
   std::unique_ptr<gpu::Framebuffer> ids_fbo_;
   ivec2 ids_size_{0, 0};
   gpu::Buffer c3rc_buffer_, item_buffer_, counter_buffer_;
@@ -344,9 +338,6 @@ class HybridMethod final : public Method {
   C3rcFrame last_;
   std::unique_ptr<KdGpuCull> gpu_cull_;  // --hybrid-cull-on gpu
   KdGpuCullResult gpu_last_;
-  bool captured_ = false, captured_mip_ = false;
-  std::vector<uint64_t> captured_key_;
-  long captures_ = 0;
   double visibility_ms_ = 0.0, splat_ms_ = 0.0;
 };
 
@@ -404,6 +395,7 @@ MethodEntry hybridMethodEntry() {
                       "level of detail: project at most this many points per visible pixel of "
                       "a reflector triangle (a uniform subsample with larger splats; 0: all)"),
       envmapSizeParam()};
+  for (ParamSpec& spec : probeRecaptureParams()) entry.info.params.push_back(std::move(spec));
   entry.create = factoryOf<HybridMethod>();
   return entry;
 }

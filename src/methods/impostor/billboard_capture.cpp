@@ -1,21 +1,32 @@
 #include "methods/impostor/billboard_capture.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace mirage {
 
 namespace {
 
-bool sameCamera(const CameraDesc& a, const CameraDesc& b) {
-  return a.position == b.position && a.target == b.target && a.up == b.up &&
-         a.fov_y_degrees == b.fov_y_degrees && a.near_plane == b.near_plane &&
-         a.far_plane == b.far_plane;
+float angleBetween(const vec3& a, const vec3& b) {
+  if (a == b) return 0.0f;
+  return std::acos(std::clamp(glm::dot(a, b), -1.0f, 1.0f));
+}
+
+// A direction in the space of an object under `m` (its linear part undone), unit.
+vec3 inObjectSpace(const mat4& m, const vec3& direction) {
+  const vec3 d = glm::inverse(mat3(m)) * direction;
+  const float length = glm::length(d);
+  return length > 0.0f ? d / length : vec3(0.0f);
+}
+
+bool isIdentity(const mat3& m) {
+  float off = 0.0f;
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) off = std::max(off, std::abs(m[c][r] - (c == r ? 1.0f : 0.0f)));
+  return off <= 1e-6f;
 }
 
 }  // namespace
-
-bool BillboardCapture::Key::operator==(const Key& o) const {
-  return sameCamera(camera, o.camera) && object == o.object && shape == o.shape &&
-         light_dir == o.light_dir && light_color == o.light_color && ambient == o.ambient;
-}
 
 BillboardCapture::BillboardCapture(int size)
     : size_(size),
@@ -27,49 +38,105 @@ BillboardCapture::BillboardCapture(int size)
   fbo_.attachDepth(depth_);
 }
 
-BillboardCapture::Key BillboardCapture::keyOf(const GpuScene& gpu, const BillboardSpec& b) const {
-  Key key{b.camera, gpu.instanceMatrix(b.object), gpu.shapeVersion(b.object)};
+BillboardCapture::Captured BillboardCapture::capturedNow(const GpuScene& gpu,
+                                                         const BillboardSpec& b) const {
+  Captured c;
+  c.valid = true;
+  c.corner = b.corner;
+  c.edge_u = b.edge_u;
+  c.edge_v = b.edge_v;
+  c.object = gpu.instanceMatrix(b.object);
+  c.seen_from = inObjectSpace(c.object, b.camera.position - b.camera.target);
+  c.shape = gpu.shapeVersion(b.object);
   if (b.kind != BillboardSpec::Kind::kReflective) {
     const Light& light = gpu.light();
-    key.light_dir = light.direction;
-    key.light_color = light.color;
-    key.ambient = light.ambient;
+    c.light_dir = inObjectSpace(c.object, light.direction);
+    c.light_color = light.color;
+    c.ambient = light.ambient;
   }
-  return key;
+  c.frame = frame_;
+  return c;
+}
+
+// The drift of a billboard shown from capture `c` against a capture made now: the turn of the
+// direction its object is seen from (and of the light, for a diffuse one, in the object's
+// frame), and the change of its quad's size in texels. A reflective billboard holds world-space
+// normals, so any turn or scaling of its reflector is beyond every tolerance.
+Drift BillboardCapture::drift(const GpuScene& gpu, const BillboardSpec& b,
+                              const Captured& c) const {
+  Drift d;
+  d.age = frame_ - c.frame;
+  const Captured now = capturedNow(gpu, b);
+  d.angle =
+      std::max(angleBetween(now.seen_from, c.seen_from), angleBetween(now.light_dir, c.light_dir));
+  d.unmeasured =
+      now.shape != c.shape || now.light_color != c.light_color || now.ambient != c.ambient;
+  const mat3 carry = mat3(now.object) * glm::inverse(mat3(c.object));
+  if (b.kind == BillboardSpec::Kind::kReflective && !isIdentity(carry)) d.unmeasured = true;
+  const float carried = glm::length(carry * c.edge_u);
+  const float texel = carried / float(size_);
+  d.texels = texel > 0.0f ? std::abs(glm::length(b.edge_u) - carried) / texel : 0.0f;
+  return d;
 }
 
 void BillboardCapture::allocate(const BillboardSet& set) {
   const int levels = gpu::Texture::fullMipLevels(size_);
   const int surfaces = std::max(set.surface_layers, 1);
   const int positions = std::max(set.position_layers, 1);
-  if (surfaces_.layers() != surfaces)
+  bool fresh = false;
+  if (surfaces_.layers() != surfaces) {
     surfaces_ = gpu::Texture::create2DArray(GL_RGBA16F, size_, size_, surfaces, levels);
-  if (positions_.layers() != positions)
-    positions_ = gpu::Texture::create2DArray(GL_RGBA32F, size_, size_, positions, 1);
-  if (keys_.size() != set.billboards.size()) {
-    keys_.assign(set.billboards.size(), Key{});
-    valid_.assign(set.billboards.size(), false);
+    fresh = true;
   }
+  if (positions_.layers() != positions) {
+    positions_ = gpu::Texture::create2DArray(GL_RGBA32F, size_, size_, positions, 1);
+    fresh = true;
+  }
+  if (fresh || captured_.size() != set.billboards.size())
+    captured_.assign(set.billboards.size(), Captured{});
 }
 
-int BillboardCapture::update(GpuScene& gpu, ScenePasses& passes, const BillboardSet& set,
-                             const FrameSettings& settings) {
+int BillboardCapture::update(GpuScene& gpu, ScenePasses& passes, BillboardSet& set,
+                             const FrameSettings& settings, const RecapturePolicy& policy) {
   allocate(set);
-  int captured = 0;
-  bool surfaces_changed = false;
+  std::vector<Drift> drift(set.billboards.size());
   for (size_t i = 0; i < set.billboards.size(); ++i) {
-    const BillboardSpec& b = set.billboards[i];
-    Key key = keyOf(gpu, b);
-    if (valid_[i] && keys_[i] == key) continue;
-    capture(gpu, passes, b, settings);
-    keys_[i] = key;
-    valid_[i] = true;
-    ++captured;
-    surfaces_changed = true;
+    if (!captured_[i].valid)
+      drift[i].invalid = true;
+    else
+      drift[i] = this->drift(gpu, set.billboards[i], captured_[i]);
   }
-  if (surfaces_changed) surfaces_.generateMipmaps();
-  captures_ += captured;
-  return captured;
+  const std::vector<int> due = chooseRecaptures(drift, policy);
+  std::vector<bool> fresh(set.billboards.size(), false);
+  for (int i : due) {
+    capture(gpu, passes, set.billboards[size_t(i)], settings);
+    captured_[size_t(i)] = capturedNow(gpu, set.billboards[size_t(i)]);
+    fresh[size_t(i)] = true;
+  }
+  // The others show their old captures, carried by their objects' motion since.
+  pending_ =
+      int(chooseRecaptures(drift, RecapturePolicy{policy.angle_degrees, policy.texels, 0}).size()) -
+      int(due.size());
+  largest_drift_ = 0.0f;
+  for (size_t i = 0; i < set.billboards.size(); ++i) {
+    if (fresh[i]) continue;
+    BillboardSpec& b = set.billboards[i];
+    const Captured& c = captured_[i];
+    const mat4 carry = gpu.instanceMatrix(b.object) * glm::inverse(c.object);
+    b.corner = transformPoint(carry, c.corner);
+    b.edge_u = mat3(carry) * c.edge_u;
+    b.edge_v = mat3(carry) * c.edge_v;
+    b.offset = vec3(carry[3]);
+    largest_drift_ = std::max(largest_drift_, glm::degrees(drift[i].angle));
+  }
+  // The captured layers' mip chains: all at once when most are new.
+  if (due.size() * 2 > size_t(surfaces_.layers()))
+    surfaces_.generateMipmaps();
+  else
+    for (int i : due) surfaces_.generateMipmaps(set.billboards[size_t(i)].layer, 1);
+  captures_ += long(due.size());
+  ++frame_;
+  return int(due.size());
 }
 
 void BillboardCapture::capture(GpuScene& gpu, ScenePasses& passes, const BillboardSpec& b,

@@ -206,6 +206,7 @@ std::vector<shading::BillboardData> BillboardSet::gpuData(const Scene& scene) co
               reflective ? b.represents : -1,
               reflective ? scene.instances[size_t(b.object)].material : -1));
     d.corner.w = float(b.position_layer);
+    d.offset = vec4(b.offset, 0.0f);
     data.push_back(d);
   }
   return data;

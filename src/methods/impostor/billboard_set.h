@@ -30,6 +30,9 @@ struct BillboardSpec {
   int represents = -1;  // reflective: the reflector (0-based) it stands for
   CameraDesc camera;    // captures its texture: square image, up = edge_v, right = edge_u
   vec3 corner{0.0f}, edge_u{0.0f}, edge_v{0.0f};
+  // Reflective: added to the captured surface points (BillboardCapture carries an old capture
+  // along with its reflector's motion).
+  vec3 offset{0.0f};
   int layer = -1;           // in the surface array: colour (diffuse) or normal (reflective)
   int position_layer = -1;  // reflective: in the surface-point array
 };

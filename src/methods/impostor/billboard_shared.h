@@ -36,6 +36,8 @@ struct BillboardData {
   vec4 plane;   // xyz: unit normal n = edge_u x edge_v / |...|; w: dot(n, corner)
   ivec4 info;   // x: MIRAGE_BILLBOARD_*; y: surface layer; z: the reflector a reflective
                 // billboard stands for (0-based, -1 for diffuse); w: its material (-1)
+  vec4 offset;  // xyz: added to a reflective billboard's stored surface points (its reflector
+                // moved since the capture, the quad carried with it); w: unused
 };
 
 // Per reflector (0-based), which list entries its rays test: x, y: first entry and count of
@@ -67,6 +69,7 @@ SHARED_FN BillboardData make_billboard(vec3 corner, vec3 edge_u, vec3 edge_v, iv
   b.edge_v = vec4(edge_v, 1.0f / dot(edge_v, edge_v));
   b.plane = vec4(n, dot(n, corner));
   b.info = info;
+  b.offset = vec4(0.0f);
   return b;
 }
 
@@ -84,7 +87,7 @@ SHARED_FN vec2 billboard_uv_differential(BillboardData b, vec3 dir, float t, vec
 SHARED_END
 
 #ifndef MIRAGE_GLSL
-static_assert(sizeof(mirage::shading::BillboardData) == 5 * 16, "BillboardData layout");
+static_assert(sizeof(mirage::shading::BillboardData) == 6 * 16, "BillboardData layout");
 static_assert(sizeof(mirage::shading::BillboardRange) == 16, "BillboardRange layout");
 #endif
 

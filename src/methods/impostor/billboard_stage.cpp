@@ -3,6 +3,7 @@
 #include <span>
 
 #include "methods/probe_params.h"
+#include "methods/recapture_params.h"
 
 namespace mirage {
 
@@ -21,7 +22,7 @@ bool lastBounceReflective(const ParamValues& params) {
 }
 
 std::vector<ParamSpec> billboardStageParams() {
-  return {
+  std::vector<ParamSpec> params = {
       ParamSpec::integer("billboard-size", 16, 4096, 256,
                          "face size of each billboard texture, in texels"),
       ParamSpec::real("billboard-fov", 1.0, 60.0, 10.0,
@@ -38,6 +39,8 @@ std::vector<ParamSpec> billboardStageParams() {
                       "height of the transition walls that morph the ground billboard into the "
                       "environment (scene units; 0 = off)"),
       envmapSizeParam()};
+  for (ParamSpec& spec : billboardRecaptureParams()) params.push_back(std::move(spec));
+  return params;
 }
 
 BillboardStageOptions billboardStageOptions(const ParamValues& params) {
@@ -47,6 +50,7 @@ BillboardStageOptions billboardStageOptions(const ParamValues& params) {
   o.set.morph_height = float(params.real("morph-height"));
   o.billboard_size = params.integer("billboard-size");
   o.envmap_size = params.integer("envmap-size");
+  o.recapture = billboardRecapture(params);
   return o;
 }
 
@@ -70,21 +74,22 @@ BillboardStage::BillboardStage(const BillboardStageOptions& options)
 void BillboardStage::update(FrameContext& frame) {
   GpuScene& gpu = frame.gpu;
   // Placements and captures depend on the scene's state only (its version): a frame that does
-  // not change it (a camera move, a new mip setting) has nothing to redo.
-  if (updated_ && updated_version_ == gpu.version()) {
+  // not change it (a camera move, a new mip setting) has nothing to redo, unless the budget left
+  // drifted billboards for later frames.
+  if (updated_ && updated_version_ == gpu.version() && capture_.pending() == 0) {
     last_captures_ = 0;
     return;
   }
   const Scene& scene = gpu.scene();
   set_ = placeBillboards(scene, gpu.time(), options_.set);
-  std::vector<shading::BillboardData> data = set_.gpuData(scene);
-  billboards_.upload(std::span<const shading::BillboardData>(data));
   ranges_.upload(std::span<const shading::BillboardRange>(set_.ranges));
   // An empty list still needs a buffer to bind.
   std::vector<int> entries = set_.entries;
   if (entries.empty()) entries.push_back(0);
   entries_.upload(std::span<const int>(entries));
-  last_captures_ = capture_.update(gpu, frame.passes, set_, frame.settings);
+  last_captures_ = capture_.update(gpu, frame.passes, set_, frame.settings, options_.recapture);
+  std::vector<shading::BillboardData> data = set_.gpuData(scene);
+  billboards_.upload(std::span<const shading::BillboardData>(data));
   updateEnvironment(frame);
   updated_ = true;
   updated_version_ = gpu.version();
@@ -128,7 +133,9 @@ std::map<std::string, double> BillboardStage::stats() const {
           {"billboard_captures_last_update", double(last_captures_)},
           {"diffuse_billboards", double(diffuse)},
           {"reflective_billboards", double(reflective)},
-          {"environment_captures", double(env_captures_)}};
+          {"environment_captures", double(env_captures_)},
+          {"billboards_pending", double(capture_.pending())},
+          {"billboard_drift_degrees", double(capture_.largestDriftDegrees())}};
 }
 
 // Diffuse objects without impostors (and the ground, when it morphs into the environment) are

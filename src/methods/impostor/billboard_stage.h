@@ -22,8 +22,9 @@ namespace mirage {
 
 struct BillboardStageOptions {
   BillboardSetOptions set;
-  int billboard_size = 256;  // texels per billboard side
-  int envmap_size = 256;     // face size of the captured environment
+  int billboard_size = 256;   // texels per billboard side
+  int envmap_size = 256;      // face size of the captured environment
+  RecapturePolicy recapture;  // moving scenes: when billboards are re-captured
 };
 
 // The parameters every impostor method takes for its billboards, and the options they make.
@@ -42,7 +43,8 @@ class BillboardStage {
  public:
   explicit BillboardStage(const BillboardStageOptions& options);
 
-  // Places and captures what changed since the last call (nothing for a camera move).
+  // Places the billboards and re-captures those that drifted beyond the tolerances since their
+  // capture, within the budget (nothing for a camera move; every one the first time).
   void update(FrameContext& frame);
   // Binds the buffers, textures and morph uniforms that impostor_trace.glsl reads.
   void bind(const gpu::Program& program, const GpuScene& gpu) const;

@@ -61,10 +61,11 @@ float billboard_coverage(BillboardData b, vec2 uv) {
 // The capture writes (point, 1) where the reflector covers a texel and leaves (0, 0, 0, 0)
 // elsewhere, so a bilinear lookup at a silhouette returns (sum of w_i p_i, sum of w_i) over the
 // covered texels: dividing by the filtered coverage averages their points. Undivided, the
-// uncovered texels' zeros would pull the point towards the world origin.
+// uncovered texels' zeros would pull the point towards the world origin. The offset carries the
+// points along when the reflector moved since its capture.
 vec3 billboard_surface_point(BillboardData b, vec2 uv) {
   vec4 p = textureLod(u_billboard_position, vec3(uv, b.corner.w), 0.0f);
-  return p.xyz / max(p.w, 1.0e-6f);
+  return p.xyz / max(p.w, 1.0e-6f) + b.offset.xyz;
 }
 
 // Once the hit distance of the ray leaving a reflective billboard is known, that reflector's

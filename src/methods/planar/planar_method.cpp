@@ -4,6 +4,7 @@
 
 #include "methods/planar/planar_probes.h"
 #include "methods/probe_params.h"
+#include "methods/recapture_params.h"
 #include "render/base_colour.h"
 #include "render/mirror_images.h"
 
@@ -30,7 +31,8 @@ class PlanarMethod final : public Method {
         planar_(planarReflectors(setup.gpu.scene(), &not_planar_, "planar")) {
     if (probesFor(setup) && not_planar_ > 0)
       probes_ = std::make_unique<PlanarProbes>(setup.gpu.scene(), planar_,
-                                               setup.params.integer("envmap-size"));
+                                               setup.params.integer("envmap-size"),
+                                               probeRecapture(setup.params));
   }
 
   // Nothing captured for the mirrors (every frame is drawn anew); with --planar-curved probes,
@@ -141,6 +143,7 @@ MethodEntry planarMethodEntry() {
           "probe captured at each (as envmap's); auto: probes in a composite (method mixed), "
           "else the base colour"),
       envmapSizeParam()};
+  for (ParamSpec& spec : probeRecaptureParams()) entry.info.params.push_back(std::move(spec));
   entry.info.description =
       "exact planar mirrors by re-rendering the scene from the mirrored eye, the mirror plane as "
       "an oblique near plane, recursing to the reflection order (forward-mapped mirrors paper's "

@@ -7,32 +7,30 @@
 #include <vector>
 
 #include "methods/method.h"
-#include "render/cube_capture.h"
+#include "render/probe_array.h"
 
 namespace mirage {
 
 class PlanarProbes {
  public:
-  PlanarProbes(const Scene& scene, const std::vector<int>& planar, int size);
+  PlanarProbes(const Scene& scene, const std::vector<int>& planar, int size,
+               const RecapturePolicy& recapture);
 
-  // Captures the probes again when what they show changed (or the mip setting did).
+  // Captures the probes again once what they show drifted beyond the tolerances (all of them
+  // the first time, or when the mip setting changed).
   void update(FrameContext& frame, const gpu::Program& base_program);
   // Draws the curved reflectors through their probes into the bound target, for the view whose
   // passes are begun.
   void draw(const FrameContext& frame) const;
-  long captures() const { return captures_; }
+  long captures() const { return probes_.captures(); }
+  int pending() const { return probes_.pending(); }
 
  private:
   std::vector<int> curved_;   // the reflectors that are not planar
   std::vector<int> diffuse_;  // what the probes show besides reflectors
-  int size_;
-  size_t reflectors_;  // cube-array layers: one cube per reflector id - 1
+  ProbeArray probes_;         // one cube per curved reflector, in the order of curved_
+  RecapturePolicy recapture_;
   gpu::Program program_;
-  gpu::Texture probes_;
-  std::unique_ptr<CubeCapture> cube_;
-  std::vector<uint64_t> key_;
-  bool captured_ = false, mip_ = false;
-  long captures_ = 0;
 };
 
 }  // namespace mirage

@@ -6,6 +6,7 @@
 #include "gpu/buffer.h"
 #include "gpu/framebuffer.h"
 #include "methods/probe_params.h"
+#include "methods/recapture_params.h"
 #include "methods/ssr/hiz_pyramid.h"
 #include "methods/ssr/ssr_shared.h"
 
@@ -189,6 +190,7 @@ MethodEntry ssrMethodEntry() {
                         "ssr: the reflection probes shown where the screen has no data"),
       // The fallback's own parameters (envmap-box's, a superset of envmap's).
       envmapSizeParam(), probeProxyParam()};
+  for (ParamSpec& spec : probeRecaptureParams()) entry.info.params.push_back(std::move(spec));
   entry.info.counters = {"cube_captures", "capture_passes"};
   entry.info.frame_stats = {"ssr_hit_fraction", "ssr_fallback_fraction"};
   entry.create = factoryOf<SsrMethod>();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "methods/recapture_params.h"
 #include "render/base_colour.h"
 
 namespace mirage {
@@ -14,7 +15,7 @@ constexpr Choice<bool> kInverseWarp[] = {{"inverse", true}, {"base", false}};
 }  // namespace
 
 std::vector<ParamSpec> ZexelCurvedReflectors::params() {
-  return {
+  std::vector<ParamSpec> params = {
       ParamSpec::choice<bool>("zexel-curved", kInverseWarp, true,
                               "curved reflectors: inverse warping of a depth-preserving cube map "
                               "of each, or their base colour"),
@@ -24,12 +25,16 @@ std::vector<ParamSpec> ZexelCurvedReflectors::params() {
       ParamSpec::real("zexel-curved-step", 0.25, 16.0, 1.0,
                       "the inverse warp's step along the reflected ray's epipolar line in "
                       "the cube map, in texels")};
+  for (ParamSpec& spec : probeRecaptureParams()) params.push_back(std::move(spec));
+  return params;
 }
 
 ZexelCurvedReflectors::ZexelCurvedReflectors(const MethodSetup& setup)
     : inverse_(setup.params.choice<bool>("zexel-curved", kInverseWarp)),
       size_(setup.params.integer("zexel-cube-size")),
       search_(zexelInverseSettings(size_, float(setup.params.real("zexel-curved-step")))),
+      cubes_(size_, GL_RGBA32F),
+      recapture_(probeRecapture(setup.params)),
       program_(
           gpu::Program::graphics("render/shaders/scene.vert", "methods/zexel/zexel_inverse.frag")),
       base_program_(baseColourProgram()),
@@ -45,32 +50,25 @@ ZexelCurvedReflectors::ZexelCurvedReflectors(const MethodSetup& setup)
 
 void ZexelCurvedReflectors::update(FrameContext& frame) {
   if (!inverse_ || curved_.empty() || frame.settings.order == 0) return;
-  const bool mip = frame.settings.mip;
   // The cubes show every diffuse object, the other reflectors and the light.
-  std::vector<uint64_t> key = frame.gpu.probeKey(diffuse_);
-  if (captured_ && captured_key_ == key && captured_mip_ == mip) return;
-  const int levels = mip ? gpu::Texture::fullMipLevels(size_) : 1;
-  if (cubes_.layers() != 6 * int(curved_.size()) || cubes_.levels() != levels)
-    cubes_ = gpu::Texture::createCubeArray(GL_RGBA32F, size_, int(curved_.size()), levels);
-  if (!capture_) capture_ = std::make_unique<CubeCapture>(size_);
+  const std::vector<int> reflectors = frame.gpu.scene().reflectorInstances();
   const float radius = std::max(frame.gpu.scene().bounds(frame.gpu.time()).radius(), 1e-3f);
-  centres_.clear();
-  for (size_t r = 0; r < curved_.size(); ++r) {
-    const int instance = curved_[r];
-    centres_.push_back(frame.gpu.instanceBounds(instance).center());
-    // The frame's alpha is the distance from the view's eye: from the centre here.
-    capture_->capture(cubes_, int(r), centres_.back(), 1e-3f * radius, 100.0f * radius,
-                      [&](const View& v) {
-                        frame.passes.begin(v, frame.settings);
-                        frame.passes.drawDirect();
-                        frame.passes.drawReflectors(base_program_, instance);
-                      });
-    ++captures_;
+  std::vector<vec3> centres;
+  std::vector<std::vector<int>> shown;
+  for (int instance : curved_) {
+    centres.push_back(frame.gpu.instanceBounds(instance).center());
+    shown.push_back(shownByProbe(diffuse_, reflectors, instance));
   }
-  if (mip) cubes_.generateMipmaps();
-  captured_ = true;
-  captured_key_ = std::move(key);
-  captured_mip_ = mip;
+  // The frame's alpha is the distance from the view's eye: from the centre here.
+  cubes_.update(frame.gpu, int(curved_.size()), frame.settings.mip, centres, shown, recapture_,
+                1e-3f * radius, 100.0f * radius, [&](int r, const View& v) {
+                  frame.passes.begin(v, frame.settings);
+                  frame.passes.drawDirect();
+                  frame.passes.drawReflectors(base_program_, curved_[size_t(r)]);
+                });
+  // A map not captured again this frame is searched from where it was captured.
+  centres_.clear();
+  for (size_t r = 0; r < curved_.size(); ++r) centres_.push_back(cubes_.centre(int(r), centres[r]));
 }
 
 void ZexelCurvedReflectors::draw(FrameContext& frame) const {
@@ -87,7 +85,8 @@ void ZexelCurvedReflectors::draw(FrameContext& frame) const {
 
 void ZexelCurvedReflectors::addStats(std::map<std::string, double>& stats) const {
   stats["zexel_curved_reflectors"] = inverse_ ? double(curved_.size()) : 0.0;
-  stats["zexel_cube_captures"] = double(captures_);
+  stats["zexel_cube_captures"] = double(cubes_.captures());
+  stats["zexel_cubes_pending"] = double(cubes_.pending());
 }
 
 }  // namespace mirage

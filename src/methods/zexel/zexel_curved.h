@@ -15,7 +15,7 @@
 
 #include "methods/method.h"
 #include "methods/zexel/zexel_cube_map.h"
-#include "render/cube_capture.h"
+#include "render/probe_array.h"
 
 namespace mirage {
 
@@ -27,8 +27,9 @@ class ZexelCurvedReflectors {
 
   explicit ZexelCurvedReflectors(const MethodSetup& setup);
 
-  // Captures every map the first time and when the scene changed since (a camera move alone
-  // changes nothing here) or the mip setting did.
+  // Captures every map the first time (and when the mip setting changed), then again once what
+  // it shows drifted beyond the tolerances, within the probe budget (a camera move alone changes
+  // nothing here).
   void update(FrameContext& frame);
   // Draws the curved reflectors into the bound target, after ScenePasses::begin for the frame's
   // view and before the pass that draws the remaining reflectors in their base colour: that pass
@@ -43,14 +44,11 @@ class ZexelCurvedReflectors {
   int size_;
   ZexelInverseSettings search_;
   std::vector<int> curved_;  // the reflector instances served, in order (cube = index)
+  ProbeArray cubes_;         // RGBA32F, one cube per curved reflector
+  RecapturePolicy recapture_;
   gpu::Program program_, base_program_;
-  gpu::Texture cubes_;  // RGBA32F cube-map array, one cube per curved reflector
-  std::vector<vec3> centres_;
-  std::unique_ptr<CubeCapture> capture_;
-  bool captured_ = false, captured_mip_ = false;
-  std::vector<uint64_t> captured_key_;
-  std::vector<int> diffuse_;  // every diffuse instance
-  long captures_ = 0;
+  std::vector<vec3> centres_;  // where each cube was captured
+  std::vector<int> diffuse_;   // every diffuse instance
 };
 
 }  // namespace mirage
