@@ -28,13 +28,19 @@ void addSceneOptions(CLI::App* app, SceneArgs& args) {
                   "`mirage view` records them) to use instead of the scene's cameras");
   args.time_option =
       app->add_option("--time", args.time, "scene time in seconds (animated scenes, camera paths)");
+  app->add_option("--stage", args.stage,
+                  "model files: auto (a file with a camera of its own is shown as it is, one "
+                  "without on the default stage), on (the default stage, the file's cameras "
+                  "fitted along) or off (as it is, framed when it has no camera)");
   addDefaulted(app, "--max-memory", args.max_memory,
                "what one input file (mesh, image, compressed stream) may make mirage allocate, "
                "checked from its header before reading (1M..1T, e.g. 512M, 4G)");
 }
 
 void addFrameOptions(CLI::App* app, FrameArgs& args) {
-  addDefaulted(app, "--size", args.size, "image size WxH (1..16384 each)");
+  args.size_option = addDefaulted(app, "--size", args.size,
+                                  "image size WxH (1..16384 each); not given, the height "
+                                  "follows the camera's aspect ratio when it has one");
   addDefaulted(app, "--order", args.order,
                fmt::format("reflection order K (0..{}; 0 = no reflections)", kMaxOrder));
   addDefaulted(app, "--mip", args.mip, "mip-mapped reflection lookups: on|off");
@@ -69,6 +75,21 @@ ivec2 parseSize(const std::string& text) {
   return {w, h};
 }
 
+ivec2 imageSize(const FrameArgs& args, const CameraDesc& camera) {
+  ivec2 size = parseSize(args.size);
+  if (!(camera.aspect > 0.0f)) return size;
+  const int height = int(std::clamp(std::lround(float(size.x) / camera.aspect), 1L, 16384L));
+  if (args.size_option && args.size_option->count() > 0) {
+    if (height != size.y)
+      spdlog::info(
+          "--size {}x{}: camera '{}' was made for {}x{} (aspect {}); its vertical field of view "
+          "is kept",
+          size.x, size.y, camera.name, size.x, height, camera.aspect);
+    return size;
+  }
+  return {size.x, height};
+}
+
 Scene loadSceneFromArgs(SceneArgs& args) {
   if (!(args.time >= 0.0f && args.time <= 1e6f))
     throwInput("--time {}: allowed 0..1e6 seconds", args.time);
@@ -77,6 +98,11 @@ Scene loadSceneFromArgs(SceneArgs& args) {
   setMaxMemory(parseByteSize("--max-memory", args.max_memory));
   SceneOptions options;
   options.reflectors = args.reflectors;
+  if (!args.stage.empty()) {
+    options.stage = findChoice<StageMode>(kStageModes, args.stage);
+    if (!options.stage)
+      throwInput("--stage {}: allowed {}", args.stage, choiceNames<StageMode>(kStageModes, "|"));
+  }
   Scene scene = loadScene(args.scene, options);
   if (!args.camera_path.empty()) {
     const CameraFile file = loadCameraFile(args.camera_path);

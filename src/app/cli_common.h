@@ -21,6 +21,7 @@ struct SceneArgs {
   int reflectors = -1;
   std::string camera;
   std::string camera_path;  // a camera file (scene/camera_file.h), used instead of the scene's
+  std::string stage;        // model files: auto|on|off (StageMode); empty: not given
   float time = 0.0f;
   CLI::Option* time_option = nullptr;  // to tell a given --time from the default
   std::string max_memory = "4G";       // what one input file may make us allocate
@@ -28,6 +29,7 @@ struct SceneArgs {
 
 struct FrameArgs {
   std::string size = "720x512";
+  CLI::Option* size_option = nullptr;  // to tell a given --size from the default
   int order = 2;
   std::string mip = "on";
   float exposure = 1.0f;
@@ -71,6 +73,9 @@ Command renderingCommand(CLI::App& parent, const std::string& name, const std::s
 
 // "WxH" with 1 <= W, H <= 16384; throws InputError naming the option.
 ivec2 parseSize(const std::string& text);
+// The image size for `camera`: --size when given; else the default's width and, for a camera
+// with an aspect of its own (a glTF camera's aspectRatio), the height that aspect gives.
+ivec2 imageSize(const FrameArgs& args, const CameraDesc& camera);
 // The scene; with --camera-path, the file's camera becomes its first (the one every command
 // uses when --camera is not given: the two exclude each other), and the file's time (a
 // screenshot's) becomes args.time unless --time was given.

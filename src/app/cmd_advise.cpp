@@ -48,6 +48,7 @@ int runAdvise(AdviseArgs& args) {
   setup.budget = parseBudget(args.budget);
   setup.candidates = candidateGrid(assignableMethods(args.methods));
   Scene scene = loadSceneFromArgs(args.scene);
+  setup.size = imageSize(args.frame, scene.camera(args.scene.camera));
   setup.views = calibrationViews(scene, args.scene.time, args.views);
   ensureDirectory(args.out);
   auto context = openHeadlessContext();

@@ -288,6 +288,7 @@ int runBench(BenchArgs& args) {
   warnUnusedParams(args.params, names);
   Scene scene = loadSceneFromArgs(args.scene);
   const CameraDesc& camera = scene.camera(args.scene.camera);
+  size = imageSize(args.frame, camera);
   auto context = openHeadlessContext();
   FrameRenderer renderer(scene, size);
   std::vector<Run> runs =

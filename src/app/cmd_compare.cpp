@@ -153,6 +153,7 @@ int runCompare(CompareArgs& args) {
   Scene scene = loadSceneFromArgs(args.scene);
   run.scene = &scene;
   const CameraDesc* path_camera = args.path_frames > 0 ? &pathCamera(scene, args) : nullptr;
+  run.size = imageSize(args.frame, scene.camera(args.scene.camera));
   const View view(scene.camera(args.scene.camera).at(args.scene.time), run.size);
   auto context = openHeadlessContext();
   run.context = context.get();

@@ -73,6 +73,7 @@ int runRender(RenderArgs& args) {
   warnUnusedParams(args.params, {args.method});
   Scene scene = loadSceneFromArgs(args.scene);
   const CameraDesc& camera = scene.camera(args.scene.camera);
+  size = imageSize(args.frame, camera);
   auto context = openHeadlessContext();
   // --ssaa N: the frame is N x N times the output and box-filtered down to it.
   const int ssaa = args.frame.ssaa;

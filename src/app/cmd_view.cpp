@@ -79,6 +79,7 @@ int runView(ViewArgs& args) {
   for (size_t i = 0; i < scene.cameras.size(); ++i)
     if (scene.cameras[i].name == args.scene.camera) o.camera_index = int(i);
   o.camera = scene.camera(args.scene.camera).at(args.scene.time);
+  o.size = imageSize(args.frame, scene.camera(args.scene.camera));
   o.time = args.scene.time;
   o.play = scene.animated() && !args.pause;
   o.method = args.method;

@@ -19,6 +19,9 @@ struct CameraDesc {
   float fov_y_degrees = 45.0f;  // vertical field of view
   float near_plane = 0.05f;
   float far_plane = 1000.0f;
+  // The image's width / height the camera was made for (a glTF camera's aspectRatio); 0: none, the
+  // image's own. Only the default image size follows it: a View keeps fov_y whatever its size.
+  float aspect = 0.0f;
   // Keyframes of position and target (a walk); empty for a still camera. A camera with a path
   // keeps its first key in `position` and `target`.
   CameraPath path;

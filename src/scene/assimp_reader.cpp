@@ -5,7 +5,8 @@
 // Materials follow the other readers: metallic 1 with roughness 0 (glTF through assimp) is a
 // reflector tinted by the base colour; otherwise the base/diffuse colour times the base/diffuse
 // texture. Formats without materials (STL) get assimp's default material, reported as none (-1).
-// Texture coordinates: assimp's origin is the image's bottom-left, as mirage's.
+// Texture coordinates: assimp's origin is the image's bottom-left, as mirage's. Cameras and the
+// light: assimp_scene_parts.h.
 #include <algorithm>
 #include <filesystem>
 
@@ -17,6 +18,7 @@
 #include <spdlog/spdlog.h>
 
 #include "core/error.h"
+#include "scene/assimp_scene_parts.h"
 #include "scene/loader_support.h"
 #include "scene/model_loader.h"
 
@@ -47,7 +49,11 @@ class AssimpConverter {
 
  public:
   AssimpConverter(const std::string& path, const aiScene& scene, const LoadLimits& limits)
-      : path_(path), scene_(scene), limits_(limits), textures_(out_.textures) {}
+      : path_(path),
+        scene_(scene),
+        limits_(limits),
+        gltf_(loader::lowerExtension(path) == ".gltf" || loader::lowerExtension(path) == ".glb"),
+        textures_(out_.textures) {}
 
   LoadedModel run() {
     // Materials are converted when a mesh first uses one: assimp adds unused defaults (its
@@ -66,12 +72,14 @@ class AssimpConverter {
       }
       return material_of[i];
     };
+    assimp::SceneParts parts(path_, scene_, gltf_);
     std::vector<std::pair<const aiNode*, mat4>> stack;
     if (scene_.mRootNode) stack.push_back({scene_.mRootNode, mat4(1.0f)});
     while (!stack.empty()) {
       auto [node, parent] = stack.back();
       stack.pop_back();
       mat4 world = parent * toGlm(node->mTransformation);
+      parts.addNode(*node, world);
       for (unsigned k = 0; k < node->mNumMeshes; ++k) {
         unsigned mi = node->mMeshes[k];
         if (mi >= scene_.mNumMeshes) continue;
@@ -85,6 +93,7 @@ class AssimpConverter {
         int mat = materialIndex(am.mMaterialIndex);
         out_.mesh_material.push_back(mat);
         out_.mesh_transform.push_back(world);
+        out_.mesh_node.push_back(node->mName.C_Str());
         Mesh& m = out_.meshes.back();
         if (mat >= 0 && out_.materials[size_t(mat)].normal_map >= 0 && !m.uvs.empty())
           m.computeTangents();
@@ -92,6 +101,7 @@ class AssimpConverter {
       for (unsigned c = node->mNumChildren; c-- > 0;) stack.push_back({node->mChildren[c], world});
     }
     if (out_.meshes.empty()) throwInput("{}: the file has no triangle meshes", path_);
+    parts.finish(out_);
     return std::move(out_);
   }
 
@@ -180,6 +190,7 @@ class AssimpConverter {
   const std::string& path_;
   const aiScene& scene_;
   const LoadLimits& limits_;
+  bool gltf_;  // assimp's glTF importer has conventions of its own (assimp_scene_parts.h)
   uint64_t vertices_ = 0, triangles_ = 0;
   LoadedModel out_;
   loader::TextureList textures_;

@@ -2,15 +2,26 @@
 // figures use. `mirage scenes` lists them.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/choices.h"
 #include "scene/scene.h"
 
 namespace mirage {
 
+// How a model file given as the scene is shown (--stage): kAuto, as it is when it has a camera
+// and on the default stage otherwise; kOn, on the default stage (its cameras fitted along);
+// kOff, as it is (framed by a camera of mirage's when it has none).
+enum class StageMode { kAuto, kOn, kOff };
+inline constexpr Choice<StageMode> kStageModes[] = {
+    {"auto", StageMode::kAuto}, {"on", StageMode::kOn}, {"off", StageMode::kOff}};
+
 struct SceneOptions {
   int reflectors = -1;  // spheres9: keep the first N reflectors (1..9); -1: all
+  // Model files only (--stage); nothing: not given, which is kAuto.
+  std::optional<StageMode> stage;
 };
 
 struct BuiltinSceneInfo {

@@ -9,7 +9,7 @@
 // flip. Materials: pbrMetallicRoughness metallicFactor 1 and roughnessFactor 0 make a reflector
 // tinted by baseColorFactor over a 0.05 grey base (a perfect metal mirror's base colour only
 // shows past the last reflection order); anything else is diffuse with baseColorFactor times
-// baseColorTexture.
+// baseColorTexture. Cameras and the KHR_lights_punctual light: gltf_scene_parts.h.
 #include <cstring>
 #include <filesystem>
 #include <numeric>
@@ -22,6 +22,7 @@
 #include "core/error.h"
 #include "core/memory_cap.h"
 #include "scene/gltf_accessor.h"
+#include "scene/gltf_scene_parts.h"
 #include "scene/loader_support.h"
 #include "scene/model_loader.h"
 
@@ -108,7 +109,8 @@ class GltfConverter {
     std::vector<int> r = roots();
     for (auto it = r.rbegin(); it != r.rend(); ++it) stack.push_back({*it, mat4(1.0f)});
     if (stack.empty())  // meshes without nodes: show each once, untransformed
-      for (size_t m = 0; m < gltf_.meshes.size(); ++m) addMesh(int(m), mat4(1.0f));
+      for (size_t m = 0; m < gltf_.meshes.size(); ++m) addMesh(int(m), mat4(1.0f), "");
+    gltf::SceneParts parts(path_, gltf_);
     std::vector<char> seen(gltf_.nodes.size(), 0);
     while (!stack.empty()) {
       auto [n, parent] = stack.back();
@@ -119,11 +121,13 @@ class GltfConverter {
         throwInput("{}: node {} is reached twice; glTF nodes must form trees", path_, n);
       const tinygltf::Node& node = gltf_.nodes[size_t(n)];
       mat4 world = parent * localMatrix(n, node);
-      if (node.mesh >= 0) addMesh(node.mesh, world);
+      if (node.mesh >= 0) addMesh(node.mesh, world, node.name);
+      parts.addNode(n, node, world);
       for (auto c = node.children.rbegin(); c != node.children.rend(); ++c)
         stack.push_back({*c, world});
     }
     if (out_.meshes.empty()) throwInput("{}: the glTF file has no triangle meshes", path_);
+    parts.finish(out_);
     return std::move(out_);
   }
 
@@ -173,7 +177,7 @@ class GltfConverter {
     return m;
   }
 
-  void addMesh(int index, const mat4& world) {
+  void addMesh(int index, const mat4& world, const std::string& node) {
     if (index < 0 || size_t(index) >= gltf_.meshes.size())
       throwInput("{}: a node refers to mesh {}, but the file has {}", path_, index,
                  gltf_.meshes.size());
@@ -195,6 +199,7 @@ class GltfConverter {
       out_.mesh_material.push_back(
           material >= 0 && size_t(material) < gltf_.materials.size() ? material : -1);
       out_.mesh_transform.push_back(world);
+      out_.mesh_node.push_back(node);
     }
   }
 

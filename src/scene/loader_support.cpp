@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <memory>
 
+#include <spdlog/spdlog.h>
+
 #include "core/error.h"
 
 namespace mirage::loader {
@@ -96,6 +98,55 @@ LoadedModel singleMeshModel(Mesh mesh) {
   model.mesh_material.push_back(-1);
   model.mesh_transform.push_back(mat4(1.0f));
   return model;
+}
+
+namespace {
+
+// `v` made unit length; InputError naming `what` and `field` when it has none.
+vec3 unitAfterTransform(const std::string& what, const char* field, vec3 v) {
+  const float len = glm::length(v);
+  if (!(len > 0.0f) || !std::isfinite(len))
+    throwInput("{}: its node's transform makes its {} {} (a scale of 0, or overflow)", what, field,
+               std::isfinite(len) ? "zero" : "not finite");
+  return v / len;
+}
+
+}  // namespace
+
+CameraDesc placedCamera(const std::string& what, const mat4& world, vec3 eye, vec3 forward,
+                        vec3 up) {
+  CameraDesc c;
+  c.position = transformPoint(world, eye);
+  if (!isFinite(c.position)) throwInput("{}: its node's transform puts it at infinity", what);
+  const vec3 f = unitAfterTransform(what, "view direction", mat3(world) * forward);
+  c.up = unitAfterTransform(what, "up direction", mat3(world) * up);
+  // A shearing transform can fold up onto the view direction; a view needs them apart.
+  if (!(glm::length(glm::cross(f, c.up)) > 1e-6f))
+    throwInput("{}: its node's transform makes its up direction parallel to its view direction",
+               what);
+  c.target = c.position + f;
+  return c;
+}
+
+vec3 placedLightDirection(const std::string& what, const mat4& world, vec3 shine) {
+  return -unitAfterTransform(what, "direction", mat3(world) * shine);
+}
+
+std::string uniqueName(const std::string& name, std::set<std::string>& taken) {
+  std::string out = name;
+  for (int k = 2; taken.count(out); ++k) out = fmt::format("{}-{}", name, k);
+  taken.insert(out);
+  return out;
+}
+
+void uniqueCameraNames(const std::string& file, std::vector<CameraDesc>& cameras,
+                       std::set<std::string> taken) {
+  for (CameraDesc& c : cameras) {
+    const std::string name = uniqueName(c.name, taken);
+    if (name != c.name)
+      spdlog::warn("{}: a second camera named '{}' is called '{}'", file, c.name, name);
+    c.name = name;
+  }
 }
 
 bool repairNormals(Mesh& mesh) {

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
 
@@ -49,6 +50,22 @@ class TextureList {
 
 // A model holding one mesh without a material, placed by the identity transform.
 LoadedModel singleMeshModel(Mesh mesh);
+
+// A camera whose eye, view direction and up are given in its node's space, placed by the node's
+// world matrix. The directions are normalised after the transform (a node may scale); `what`
+// names the camera ("scene.gltf: camera 'cam_a'") in the InputError when the transform collapses
+// them, makes them parallel or leaves the eye not finite.
+CameraDesc placedCamera(const std::string& what, const mat4& world, vec3 eye, vec3 forward,
+                        vec3 up);
+// The unit direction towards a directional light that shines along `shine` in its node's space,
+// placed by the node's world matrix (InputError naming `what` when the transform collapses it).
+vec3 placedLightDirection(const std::string& what, const mat4& world, vec3 shine);
+// `name`, or the first of name-2, name-3, ... not in `taken`; the result is added to `taken`.
+std::string uniqueName(const std::string& name, std::set<std::string>& taken);
+// Renames repeated camera names (and those in `taken`) by uniqueName, warning about each with
+// `file`'s name.
+void uniqueCameraNames(const std::string& file, std::vector<CameraDesc>& cameras,
+                       std::set<std::string> taken = {});
 
 // Normalises the given normals; when any is zero or not finite, recomputes them all from the
 // triangles (a file's broken normals would otherwise shade black). Returns whether it recomputed.

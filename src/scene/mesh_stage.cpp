@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "scene/builtin_scenes.h"
+#include "scene/loader_support.h"
 #include "scene/model_loader.h"
 #include "scene/procedural.h"
 #include "scene/scene_json_internal.h"
@@ -20,15 +21,32 @@ std::string stemOf(const std::string& path) {
   return p.stem().string();
 }
 
+// A file's camera moved with the model by the stage's fit (a uniform scale and a translation).
+CameraDesc fitted(CameraDesc c, const mat4& fit) {
+  const float scale = fit[0][0];
+  c.position = transformPoint(fit, c.position);
+  c.target = transformPoint(fit, c.target);
+  c.near_plane *= scale;
+  c.far_plane *= scale;
+  return c;
+}
+
 }  // namespace
 
-Scene makeMeshStage(const std::string& path) {
+LoadedModel loadSceneModel(const std::string& path) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec))
     throwInput("--scene {}: no such file{}", path, fs::exists(path, ec) ? " (it is a folder)" : "");
   LoadedModel model = loadModel(path);
   if (model.meshes.empty()) throwInput("{}: the file holds no meshes", path);
+  return model;
+}
 
+Scene makeMeshStage(const std::string& path) {
+  return makeMeshStage(path, loadSceneModel(path));
+}
+
+Scene makeMeshStage(const std::string& path, LoadedModel model) {
   Scene s;
   s.name = stemOf(path);
   s.source = path;
@@ -84,6 +102,8 @@ Scene makeMeshStage(const std::string& path) {
   cam.target = {0.35f, 0.7f, 0.0f};
   cam.fov_y_degrees = 45.0f;
   s.cameras.push_back(cam);
+  for (const CameraDesc& c : model.cameras) s.cameras.push_back(fitted(c, fit));
+  loader::uniqueCameraNames(path, s.cameras);
   s.validate();
   return s;
 }

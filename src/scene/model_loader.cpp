@@ -61,11 +61,16 @@ LoadedModel loadModel(const std::string& path, const LoadLimits& limits) {
         ".glb, and what assimp reads: .fbx, .dae, .3ds, .stl, ...)",
         path, ext);
 
+  // Readers of formats without nodes leave the node names out.
+  if (model.mesh_node.empty()) model.mesh_node.resize(model.meshes.size());
   // The readers keep these in step; a mismatch is our bug, not the file's.
   if (model.mesh_material.size() != model.meshes.size() ||
-      model.mesh_transform.size() != model.meshes.size())
-    throwRuntime("{}: the reader returned {} meshes with {} materials and {} transforms", path,
-                 model.meshes.size(), model.mesh_material.size(), model.mesh_transform.size());
+      model.mesh_transform.size() != model.meshes.size() ||
+      model.mesh_node.size() != model.meshes.size())
+    throwRuntime(
+        "{}: the reader returned {} meshes with {} materials, {} transforms and {} node names",
+        path, model.meshes.size(), model.mesh_material.size(), model.mesh_transform.size(),
+        model.mesh_node.size());
   if (model.meshes.empty()) throwInput("{}: the file holds no triangle meshes", path);
   for (const Mesh& m : model.meshes) m.validate();
   return model;

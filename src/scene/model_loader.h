@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,8 +36,15 @@ struct LoadedModel {
   std::vector<Mesh> meshes;          // with normals (computed if the file has none)
   std::vector<int> mesh_material;    // per mesh: index into `materials`, or -1
   std::vector<mat4> mesh_transform;  // per mesh: node transform of the file's scene graph
-  std::vector<Material> materials;   // texture indices refer to `textures`
+  // Per mesh: the name of the node that places it ("" when it has none); formats without nodes
+  // (PLY, OBJ) give "" for every mesh.
+  std::vector<std::string> mesh_node;
+  std::vector<Material> materials;  // texture indices refer to `textures`
   std::vector<TextureImage> textures;
+  // The file's perspective cameras in world space (glTF, and what assimp reads), uniquely named.
+  std::vector<CameraDesc> cameras;
+  // The file's first directional light, in world space; its ambient is Light's default.
+  std::optional<Light> light;
 };
 
 // Loads any supported model file.

@@ -6,7 +6,7 @@
 
 #include "core/embedded_files.h"
 #include "core/error.h"
-#include "scene/mesh_stage.h"
+#include "scene/file_scene.h"
 #include "scene/model_loader.h"
 #include "scene/scene_json.h"
 #include "scene/scene_json_field.h"
@@ -78,7 +78,16 @@ std::vector<SceneListing> listScenes() {
 }
 
 Scene loadScene(const std::string& spec, const SceneOptions& options) {
-  if (isBuiltinScene(spec)) return makeBuiltinScene(spec, options);
+  auto notModelFile = [&] {
+    if (options.stage)
+      throwInput(
+          "--stage {} applies to model files only (.gltf, .glb, .obj, .ply, ...), not to '{}'",
+          choiceName<StageMode>(kStageModes, *options.stage), spec);
+  };
+  if (isBuiltinScene(spec)) {
+    notModelFile();
+    return makeBuiltinScene(spec, options);
+  }
   auto notSpheres9 = [&] {
     if (options.reflectors >= 0)
       throwInput("--reflectors applies to spheres9 only, not to '{}'", spec);
@@ -86,6 +95,7 @@ Scene loadScene(const std::string& spec, const SceneOptions& options) {
   for (const AssetScene& a : assetScenes()) {
     if (a.name != spec) continue;
     notSpheres9();
+    notModelFile();
     SceneListing l = describe(a);
     if (!l.available) throwInput("--scene {}: not available: {}", spec, l.missing);
     // Embedded scenes have no folder: they refer to files only as assets:<path>.
@@ -93,11 +103,12 @@ Scene loadScene(const std::string& spec, const SceneOptions& options) {
   }
   if (spec.ends_with(".json")) {
     notSpheres9();
+    notModelFile();
     return loadSceneJson(spec);
   }
   if (isModelFile(spec)) {
     notSpheres9();
-    return makeMeshStage(spec);
+    return loadModelScene(spec, options.stage.value_or(StageMode::kAuto));
   }
   throwInput(
       "--scene {}: no such scene (built-in and asset scenes: {}; or a .json scene file or "

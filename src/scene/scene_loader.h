@@ -1,6 +1,7 @@
 // Finding and loading scenes by what the user types after --scene: a built-in scene name, an
-// asset scene name (available once scripts/fetch-assets has run), a JSON scene file, or a bare
-// mesh file that gets put on a default stage.
+// asset scene name (available once scripts/fetch-assets has run), a JSON scene file, or a model
+// file: shown as it is when it has a camera of its own (scene/file_scene.h), else put on the
+// default stage (scene/mesh_stage.h); SceneOptions::stage decides otherwise.
 #pragma once
 
 #include <string>
