@@ -121,5 +121,35 @@ TEST_F(Recapture, AStoppedSceneCatchesUpOnWhatTheBudgetLeft) {
   EXPECT_TRUE(psnrAtLeast(caught_up.color, exact.color, 35.0, &exact.ids, "caught-up"));
 }
 
+// zexel's planar mirror maps: in mirror-room (the teapot turns, the box slides, the light swings
+// in front of the wall mirror) the exact policy re-captures every change, the defaults skip a
+// change below the tolerances and take at most the probe budget (one mirror) a frame.
+TEST_F(Recapture, ZexelMirrorMapsFollowThePolicy) {
+  const Scene scene = makeBuiltinScene("mirror-room", {});
+  FrameRenderer renderer(scene, kSize);
+  const View view(scene.camera(), kSize);
+  FrameSettings settings;
+  auto exact = renderer.createMethod("zexel", kExact, settings);
+  auto amortised = renderer.createMethod("zexel", {}, settings);
+  const auto captures = [&](Method& m, float time) {
+    Counts c;
+    renderer.render(m, view, time, settings, nullptr, &c);
+    return c.at("zexel_captures");
+  };
+  EXPECT_EQ(captures(*exact, 0.0f), 1.0);
+  EXPECT_EQ(captures(*amortised, 0.0f), 1.0);
+  // 1 ms: the light turns 0.03°, the teapot 0.05°: below 1 degree and 2 texels.
+  EXPECT_EQ(captures(*exact, 0.001f), 1.0);
+  EXPECT_EQ(captures(*amortised, 0.001f), 0.0);
+  // 0.5 s: everything moved well beyond the tolerances.
+  EXPECT_EQ(captures(*exact, 0.5f), 1.0);
+  const RenderedFrame exact_frame = renderer.read();
+  EXPECT_EQ(captures(*amortised, 0.5f), 1.0);
+  EXPECT_TRUE(psnrAtLeast(renderer.read().color, exact_frame.color, 50.0, &exact_frame.ids,
+                          "zexel-mirror-amortised"));
+  const RenderedFrame b = fresh(renderer, "zexel", 0.5f);
+  EXPECT_TRUE(psnrAtLeast(exact_frame.color, b.color, 50.0, &b.ids, "zexel-mirror-exact"));
+}
+
 }  // namespace
 }  // namespace mirage::test

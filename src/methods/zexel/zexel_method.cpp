@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <memory>
+#include <numeric>
 #include <string>
 
 #include "core/error.h"
+#include "methods/recapture_params.h"
 #include "methods/zexel/zexel_cpu_warper.h"
 #include "methods/zexel/zexel_curved.h"
 #include "methods/zexel/zexel_maps.h"
@@ -14,6 +16,7 @@
 #include "methods/zexel/zexel_warp_pass.h"
 #include "render/base_colour.h"
 #include "render/mirror_images.h"
+#include "render/recapture.h"
 
 namespace mirage {
 
@@ -111,27 +114,47 @@ class ZexelMethod final : public Method {
         base_program_(baseColourProgram()),
         resolve_(splatSizes(splat_, pixel_scale_)),
         counters_(MIRAGE_ZEXEL_COUNTERS * sizeof(uint32_t)),
+        policy_(probeRecapture(setup.params)),
         curved_(setup) {
     checkDriverLimits(options_);
     for (int mirror : planarReflectors(setup.gpu.scene(), &not_planar_, "zexel"))
       mirrors_.push_back(std::make_unique<ZexelMirror>(ZexelMirror{{mirror, options_}, {}}));
   }
 
-  // Captures every map the first time, when the scene changed, or when the eye crossed to a
-  // mirror's other side.
+  // Captures a mirror's maps the first time and when the eye crossed to its other side; in a
+  // moving scene once what they show drifted beyond the re-capture tolerances, seen from the
+  // mirror's centre (nearer than the reference cameras: the angles are not underestimated), the
+  // most drifted first within the probe budget: a mirror's maps count as one capture.
   void update(FrameContext& frame) override {
     curved_.update(frame);
-    const bool changed = captured_version_ != frame.gpu.version() || !captured_;
-    for (auto& m : mirrors_) {
-      vec3 point, normal;
-      if (!plane(frame, m->maps.mirror(), frame.view.eye(), point, normal)) continue;
-      if (!changed && m->maps.captured() && glm::dot(normal, m->maps.normal()) > 0.0f) continue;
-      if (!scratch_) scratch_ = std::make_unique<FrameTarget>(ivec2(options_.size));
-      m->maps.capture(frame, point, normal, *scratch_, base_program_, pyramid_program_);
-      captures_ += m->maps.count();
+    if (recapture_.size() != mirrors_.size()) recapture_.reset(mirrors_.size());
+    std::vector<int> shown(frame.gpu.scene().instances.size());
+    std::iota(shown.begin(), shown.end(), 0);  // the mirror too: its own motion re-captures
+    // One zexel spans about fov / size; ProbeRecapture counts texels of 90° faces.
+    const int face_size = std::max(int(float(options_.size) * 90.0f / options_.fov), 1);
+    std::vector<Drift> drift(mirrors_.size());
+    std::vector<vec3> points(mirrors_.size()), normals(mirrors_.size());
+    for (size_t k = 0; k < mirrors_.size(); ++k) {
+      const ZexelMirrorMaps& maps = mirrors_[k]->maps;
+      if (!plane(frame, maps.mirror(), frame.view.eye(), points[k], normals[k])) continue;
+      if (!maps.captured() || glm::dot(normals[k], maps.normal()) <= 0.0f)
+        drift[k].invalid = true;
+      else
+        drift[k] = recapture_.drift(frame.gpu, int(k), mirrorCentre(frame, maps.mirror()), shown,
+                                    face_size);
     }
-    captured_ = true;
-    captured_version_ = frame.gpu.version();
+    const std::vector<int> due = chooseRecaptures(drift, policy_);
+    for (int k : due) {
+      ZexelMirrorMaps& maps = mirrors_[size_t(k)]->maps;
+      if (!scratch_) scratch_ = std::make_unique<FrameTarget>(ivec2(options_.size));
+      maps.capture(frame, points[size_t(k)], normals[size_t(k)], *scratch_, base_program_,
+                   pyramid_program_);
+      recapture_.captured(frame.gpu, k, mirrorCentre(frame, maps.mirror()), shown);
+      captures_ += maps.count();
+    }
+    maps_pending_ = int(chooseRecaptures(drift, {policy_.angle_degrees, policy_.texels, 0}).size() -
+                        due.size());
+    recapture_.nextFrame();
   }
 
   void render(FrameContext& frame) override {
@@ -170,6 +193,7 @@ class ZexelMethod final : public Method {
     std::map<std::string, double> s = {
         {"zexel_maps", double(options_.count) * double(mirrors_.size())},
         {"zexel_captures", double(captures_)},
+        {"zexel_mirrors_pending", double(maps_pending_)},
         {"zexels_warped", double(zexels_warped_)},
         // The mean level of the tiles warped (0: every zexel of the full maps).
         {"zexel_level", tiles_warped_ > 0 ? double(tile_levels_) / double(tiles_warped_) : 0.0},
@@ -183,6 +207,10 @@ class ZexelMethod final : public Method {
   }
 
  private:
+  static vec3 mirrorCentre(const FrameContext& frame, int mirror) {
+    return frame.gpu.instanceBounds(mirror).center();
+  }
+
   static bool plane(FrameContext& frame, int mirror, const vec3& eye, vec3& point, vec3& normal) {
     return planarInstancePlane(frame.gpu.scene(), mirror,
                                frame.gpu.instanceMatrices()[size_t(mirror)], eye, point, normal);
@@ -283,8 +311,9 @@ class ZexelMethod final : public Method {
   std::vector<std::unique_ptr<ZexelMirror>> mirrors_;
   std::unique_ptr<FrameTarget> scratch_;
   int not_planar_ = 0;
-  bool captured_ = false;
-  uint64_t captured_version_ = 0;
+  RecapturePolicy policy_;
+  ProbeRecapture recapture_;  // what each mirror's maps showed when captured
+  int maps_pending_ = 0;
   long captures_ = 0, zexels_warped_ = 0, tiles_warped_ = 0, tile_levels_ = 0;
   ZexelCurvedReflectors curved_;  // the non-planar reflectors, by inverse warping
 };
