@@ -65,6 +65,20 @@ int ProbeArray::update(const GpuScene& gpu, int count, bool mip, const std::vect
   return int(due.size());
 }
 
+int ProbeArray::updateAtReflectors(const GpuScene& gpu, bool mip, const std::vector<int>& own,
+                                   const std::vector<int>& shown_from,
+                                   const std::vector<int>& reflectors,
+                                   const RecapturePolicy& policy, float radius, const Draw& draw) {
+  std::vector<vec3> centres;
+  std::vector<std::vector<int>> shown;
+  for (int instance : own) {
+    centres.push_back(gpu.instanceBounds(instance).center());
+    shown.push_back(shownByProbe(shown_from, reflectors, instance));
+  }
+  return update(gpu, int(own.size()), mip, centres, shown, policy, 1e-3f * radius, 100.0f * radius,
+                draw);
+}
+
 std::vector<int> shownByProbe(const std::vector<int>& diffuse, const std::vector<int>& reflectors,
                               int own) {
   std::vector<int> shown = diffuse;

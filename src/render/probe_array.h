@@ -43,6 +43,12 @@ class ProbeArray {
   int update(const GpuScene& gpu, int count, bool mip, const std::vector<vec3>& centres,
              const std::vector<std::vector<int>>& shown, const RecapturePolicy& policy,
              float near_plane, float far_plane, const Draw& draw);
+  // update with one probe at each instance of `own` (its bounds' centre), showing `shown_from`
+  // and every reflector of `reflectors` but its own, between 1e-3 and 100 times `radius` (the
+  // size of what the probes show).
+  int updateAtReflectors(const GpuScene& gpu, bool mip, const std::vector<int>& own,
+                         const std::vector<int>& shown_from, const std::vector<int>& reflectors,
+                         const RecapturePolicy& policy, float radius, const Draw& draw);
 
   const gpu::Texture& texture() const { return texture_; }
   void bind(int unit) const { texture_.bind(unit); }

@@ -209,19 +209,13 @@ class HybridMethod final : public Method {
     for (const std::vector<int>* list : {&background_, &reflectors_})
       for (int i : *list) bounds.extend(frame.gpu.instanceBounds(i));
     const float radius = std::max(bounds.empty() ? 1.0f : bounds.radius(), 1e-3f);
-    std::vector<vec3> centres;
-    std::vector<std::vector<int>> shown;
-    for (int instance : reflectors_) {
-      centres.push_back(frame.gpu.instanceBounds(instance).center());
-      shown.push_back(shownByProbe(background_, reflectors_, instance));
-    }
-    probes_.update(frame.gpu, int(reflectors_.size()), frame.settings.mip, centres, shown,
-                   recapture_, 1e-3f * radius, 100.0f * radius, [&](int r, const View& v) {
-                     frame.passes.begin(v, frame.settings);
-                     frame.passes.drawBackground();
-                     frame.passes.drawDiffuseInstances(background_);
-                     frame.passes.drawReflectors(base_program_, reflectors_[size_t(r)]);
-                   });
+    probes_.updateAtReflectors(frame.gpu, frame.settings.mip, reflectors_, background_, reflectors_,
+                               recapture_, radius, [&](int r, const View& v) {
+                                 frame.passes.begin(v, frame.settings);
+                                 frame.passes.drawBackground();
+                                 frame.passes.drawDiffuseInstances(background_);
+                                 frame.passes.drawReflectors(base_program_, reflectors_[size_t(r)]);
+                               });
   }
 
   // Draws the reflectors into the frame's depth and a triangle-ID image, reads the IDs back and

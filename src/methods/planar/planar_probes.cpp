@@ -21,18 +21,12 @@ void PlanarProbes::update(FrameContext& frame, const gpu::Program& base_program)
   const Scene& scene = frame.gpu.scene();
   const std::vector<int> reflectors = scene.reflectorInstances();
   const float radius = std::max(scene.bounds(frame.gpu.time()).radius(), 1e-3f);
-  std::vector<vec3> centres;
-  std::vector<std::vector<int>> shown;
-  for (int instance : curved_) {
-    centres.push_back(frame.gpu.instanceBounds(instance).center());
-    shown.push_back(shownByProbe(diffuse_, reflectors, instance));
-  }
-  probes_.update(frame.gpu, int(curved_.size()), frame.settings.mip, centres, shown, recapture_,
-                 1e-3f * radius, 100.0f * radius, [&](int k, const View& v) {
-                   frame.passes.begin(v, frame.settings);
-                   frame.passes.drawDirect();
-                   frame.passes.drawReflectors(base_program, curved_[size_t(k)]);
-                 });
+  probes_.updateAtReflectors(frame.gpu, frame.settings.mip, curved_, diffuse_, reflectors,
+                             recapture_, radius, [&](int k, const View& v) {
+                               frame.passes.begin(v, frame.settings);
+                               frame.passes.drawDirect();
+                               frame.passes.drawReflectors(base_program, curved_[size_t(k)]);
+                             });
 }
 
 void PlanarProbes::draw(const FrameContext& frame) const {

@@ -53,22 +53,18 @@ void ZexelCurvedReflectors::update(FrameContext& frame) {
   // The cubes show every diffuse object, the other reflectors and the light.
   const std::vector<int> reflectors = frame.gpu.scene().reflectorInstances();
   const float radius = std::max(frame.gpu.scene().bounds(frame.gpu.time()).radius(), 1e-3f);
-  std::vector<vec3> centres;
-  std::vector<std::vector<int>> shown;
-  for (int instance : curved_) {
-    centres.push_back(frame.gpu.instanceBounds(instance).center());
-    shown.push_back(shownByProbe(diffuse_, reflectors, instance));
-  }
   // The frame's alpha is the distance from the view's eye: from the centre here.
-  cubes_.update(frame.gpu, int(curved_.size()), frame.settings.mip, centres, shown, recapture_,
-                1e-3f * radius, 100.0f * radius, [&](int r, const View& v) {
-                  frame.passes.begin(v, frame.settings);
-                  frame.passes.drawDirect();
-                  frame.passes.drawReflectors(base_program_, curved_[size_t(r)]);
-                });
+  cubes_.updateAtReflectors(frame.gpu, frame.settings.mip, curved_, diffuse_, reflectors,
+                            recapture_, radius, [&](int r, const View& v) {
+                              frame.passes.begin(v, frame.settings);
+                              frame.passes.drawDirect();
+                              frame.passes.drawReflectors(base_program_, curved_[size_t(r)]);
+                            });
   // A map not captured again this frame is searched from where it was captured.
   centres_.clear();
-  for (size_t r = 0; r < curved_.size(); ++r) centres_.push_back(cubes_.centre(int(r), centres[r]));
+  for (int instance : curved_)
+    centres_.push_back(
+        cubes_.centre(int(centres_.size()), frame.gpu.instanceBounds(instance).center()));
 }
 
 void ZexelCurvedReflectors::draw(FrameContext& frame) const {
