@@ -34,8 +34,9 @@ ParamSpec billboardBudgetParam() {
 
 ParamSpec probeBudgetParam() {
   return ParamSpec::integer("probe-budget", 0, 1 << 20, 1,
-                            "moving scenes: cube maps re-captured a frame, most drifted first "
-                            "(0: every one that drifted beyond the tolerances)");
+                            "moving scenes: cube maps (a zexel mirror's maps: one) re-captured "
+                            "a frame, most drifted first (0: every one that drifted beyond the "
+                            "tolerances)");
 }
 
 std::vector<ParamSpec> billboardRecaptureParams() {
