@@ -15,6 +15,7 @@
 #include "core/progress.h"
 #include "core/timer.h"
 #include "eval/metrics.h"
+#include "gpu/memory.h"
 #include "gpu/object_count.h"
 #include "methods/frame.h"
 
@@ -66,9 +67,19 @@ struct Run {
   int frames = 0;  // frames to time
   size_t reflector_pixels = 0;
   std::map<std::string, double> counts;  // the sums of the timed frames' frameCounts
+  // GPU storage the method holds: what its creation and its frames allocated and kept.
+  int64_t gpu_bytes = 0;
   // The timed frames' times of each assigned part (`mixed`: one per assignment entry).
   std::vector<std::pair<std::string, std::vector<double>>> entry_ms;
 };
+
+// Calls `work` (creating or rendering r's method) and charges r with the GPU storage it left.
+template <typename Work>
+void charged(Run& r, Work&& work) {
+  const int64_t before = gpu::allocatedBytes();
+  work();
+  r.gpu_bytes += gpu::allocatedBytes() - before;
+}
 
 void addPartTimes(Run& r) {
   for (const Method::PartTime& p : r.method->partTimes()) {
@@ -97,7 +108,7 @@ std::vector<Run> createRuns(FrameRenderer& renderer, const std::vector<std::stri
   for (const std::string& name : names) {
     Run r;
     r.name = name;
-    r.method = renderer.createMethod(name, args.params, settings);
+    charged(r, [&] { r.method = renderer.createMethod(name, args.params, settings); });
     r.timer =
         std::make_unique<gpu::FrameTimer>(r.method->info().gpu ? gpu_clock : gpu::Clock::kWall);
     r.frames = args.frames;
@@ -113,7 +124,7 @@ void warmUp(std::vector<Run>& runs, FrameRenderer& renderer, const View& view,
   for (Run& r : runs) {
     Stopwatch first;
     for (int i = 0; i < std::max(args.warmup, 1); ++i)
-      renderer.render(*r.method, view, args.scene.time, settings);
+      charged(r, [&] { renderer.render(*r.method, view, args.scene.time, settings); });
     glFinish();
     if (!r.method->info().gpu) {
       double per_frame_s = first.ms() / 1000.0 / double(std::max(args.warmup, 1));
@@ -159,7 +170,9 @@ TimedFrames timeFrames(std::vector<Run>& runs, FrameRenderer& renderer, const Ca
     for (Run& r : runs) {
       if (f >= r.frames) continue;
       std::map<std::string, double> counts;
-      renderer.render(*r.method, frame_view, time, settings, r.timer.get(), &counts);
+      charged(r, [&] {
+        renderer.render(*r.method, frame_view, time, settings, r.timer.get(), &counts);
+      });
       for (const auto& [name, n] : counts) r.counts[name] += n;
       addPartTimes(r);
       progress.advance();
@@ -205,6 +218,7 @@ nlohmann::json methodEntry(Run& r, const FrameSettings& settings) {
   e["reflector_pixels"] = r.reflector_pixels;
   e["reflected_rays_per_s"] = orNull(double(r.reflector_pixels) * 1000.0 / s.median);
   e["order_rendered"] = r.method->orderRendered(settings.order);
+  e["gpu_bytes"] = r.gpu_bytes;
   if (const std::string why = r.method->fallbackReason(); !why.empty()) e["fallback"] = why;
   nlohmann::json stats = nlohmann::json::object(), per_frame = nlohmann::json::object();
   for (const auto& [k, v] : r.method->stats()) stats[k] = orNull(v);
@@ -269,6 +283,7 @@ nlohmann::json runJson(const Scene& scene, ivec2 size, const gpu::GlInfo& info,
   const char* lp = std::getenv("LP_NUM_THREADS");
   j["lp_num_threads"] = lp ? nlohmann::json(lp) : nlohmann::json(nullptr);
   j["triangles"] = scene.triangleCount();
+  j["objects"] = scene.instances.size();
   j["reflectors"] = scene.reflectorInstances().size();
   j["params"] = args.params;  // method parameters given on the command line
   j["order"] = settings.order;
@@ -291,12 +306,15 @@ int runBench(BenchArgs& args) {
   size = imageSize(args.frame, camera);
   auto context = openHeadlessContext();
   FrameRenderer renderer(scene, size);
+  // What every method shares: the scene's buffers, the frame's targets.
+  const int64_t shared_bytes = gpu::allocatedBytes();
   std::vector<Run> runs =
       createRuns(renderer, names, args, settings, gpu::defaultClock(context->info().software));
   warmUp(runs, renderer, View(camera.at(args.scene.time), size), args, settings);
   const TimedFrames timed = timeFrames(runs, renderer, camera, size, args, settings);
 
   nlohmann::json j = runJson(scene, size, context->info(), args, settings, camera);
+  j["gpu_bytes_shared"] = shared_bytes;
   if (args.fps > 0.0) j["scene_update_ms"] = summaryJson(summarize(timed.scene_ms));
   j["methods"] = methodsJson(runs, settings);
   j["resources"] = resourcesJson(timed.resources);

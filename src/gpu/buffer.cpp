@@ -10,6 +10,7 @@ Buffer::Buffer(size_t bytes, const void* data) {
   handle_ = Handle<BufferTraits>(id);
   size_ = bytes;
   glNamedBufferData(id, GLsizeiptr(bytes ? bytes : 16), data, GL_DYNAMIC_DRAW);
+  charge_ = MemoryCharge(bytes ? bytes : 16);
   // Asked only for allocations worth asking about (see Texture's checkAllocated).
   if (bytes >= (size_t(256) << 20) && glGetError() == GL_OUT_OF_MEMORY)
     throwGpu("a buffer of {} MiB is more than the driver could allocate (GL_OUT_OF_MEMORY)",

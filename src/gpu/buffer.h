@@ -5,6 +5,7 @@
 #include <span>
 
 #include "gpu/handle.h"
+#include "gpu/memory.h"
 
 namespace mirage::gpu {
 
@@ -40,6 +41,7 @@ class Buffer {
 
  private:
   Handle<BufferTraits> handle_;
+  MemoryCharge charge_;  // its data store
   size_t size_ = 0;
 };
 

@@ -6,26 +6,11 @@
 #include <bit>
 
 #include "core/error.h"
+#include "gpu/memory.h"
 
 namespace mirage::gpu {
 
 namespace {
-
-// Bytes per texel of the formats mirage allocates (16 for any other: an upper bound).
-uint64_t texelBytes(GLenum format) {
-  switch (format) {
-    case GL_R32F:
-    case GL_R32UI:
-    case GL_DEPTH_COMPONENT32F:
-    case GL_RGBA8:
-      return 4;
-    case GL_RG32UI:
-    case GL_RGBA16F:
-      return 8;
-    default:
-      return 16;
-  }
-}
 
 // The driver's limits, checked before anything is allocated: a method asking past them gets a
 // GpuError naming the limit, and the frame renderer falls back to envmap.
@@ -112,6 +97,7 @@ Texture Texture::create2D(GLenum internal_format, int width, int height, int lev
   checkSize(GL_TEXTURE_2D, width, height, 1);
   Texture t(GL_TEXTURE_2D, internal_format, {width, height}, 1, levels);
   glTextureStorage2D(t.id(), levels, internal_format, width, height);
+  t.charge_ = MemoryCharge(gpu::storageBytes(internal_format, width, height, 1, levels));
   checkAllocated(internal_format, width, height, 1);
   return t;
 }
@@ -121,6 +107,7 @@ Texture Texture::create2DArray(GLenum internal_format, int width, int height, in
   checkSize(GL_TEXTURE_2D_ARRAY, width, height, layers);
   Texture t(GL_TEXTURE_2D_ARRAY, internal_format, {width, height}, layers, levels);
   glTextureStorage3D(t.id(), levels, internal_format, width, height, layers);
+  t.charge_ = MemoryCharge(gpu::storageBytes(internal_format, width, height, layers, levels));
   checkAllocated(internal_format, width, height, layers);
   return t;
 }
@@ -129,6 +116,7 @@ Texture Texture::createCube(GLenum internal_format, int size, int levels) {
   checkSize(GL_TEXTURE_CUBE_MAP, size, size, 6);
   Texture t(GL_TEXTURE_CUBE_MAP, internal_format, {size, size}, 6, levels);
   glTextureStorage2D(t.id(), levels, internal_format, size, size);
+  t.charge_ = MemoryCharge(gpu::storageBytes(internal_format, size, size, 6, levels));
   checkAllocated(internal_format, size, size, 6);
   return t;
 }
@@ -137,6 +125,7 @@ Texture Texture::createCubeArray(GLenum internal_format, int size, int cubes, in
   checkSize(GL_TEXTURE_CUBE_MAP_ARRAY, size, size, 6 * cubes);
   Texture t(GL_TEXTURE_CUBE_MAP_ARRAY, internal_format, {size, size}, 6 * cubes, levels);
   glTextureStorage3D(t.id(), levels, internal_format, size, size, 6 * cubes);
+  t.charge_ = MemoryCharge(gpu::storageBytes(internal_format, size, size, 6 * cubes, levels));
   checkAllocated(internal_format, size, size, 6 * cubes);
   return t;
 }

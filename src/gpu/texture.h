@@ -5,6 +5,7 @@
 #include "core/math.h"
 #include "gpu/buffer.h"
 #include "gpu/handle.h"
+#include "gpu/memory.h"
 
 namespace mirage::gpu {
 
@@ -36,6 +37,8 @@ class Texture {
   ivec2 size() const { return size_; }
   int layers() const { return layers_; }
   int levels() const { return levels_; }
+  // Bytes of the storage it allocated (0 for a view or a buffer texture).
+  uint64_t storageBytes() const { return charge_.bytes(); }
 
   // Uploads a level of a 2D texture.
   void upload(int level, GLenum format, GLenum type, const void* pixels);
@@ -62,6 +65,7 @@ class Texture {
   void setDefaultSampling();
 
   Handle<TextureTraits> handle_;
+  MemoryCharge charge_;  // its storage (none for a view or a buffer texture)
   GLenum target_ = 0, format_ = 0;
   ivec2 size_{0};
   int layers_ = 0, levels_ = 0;

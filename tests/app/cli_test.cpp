@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "scene/builtin_scenes.h"
 #include "support/gl_test.h"
 #include "support/test_files.h"
 
@@ -257,6 +258,38 @@ TEST_F(CliWithGl, BenchWritesJson) {
       json.string());
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_TRUE(std::filesystem::exists(json));
+}
+
+// What the scene holds and what each method allocated: envmap's probe (one cube of
+// --envmap-size faces, RGBA16F, full mips) is most of its storage, the ray tracer holds none.
+TEST_F(CliWithGl, BenchJsonCountsObjectsAndGpuBytes) {
+  auto dir = testTempDir("cli");
+  const auto bench = [&](const std::string& extra) {
+    auto json = dir / "b.json";
+    CliResult r = runMirage(
+        "bench --scene sphere-over-checker --methods none,envmap,raytrace --frames 2 "
+        "--warmup 1 --size 96x64 --json " +
+        json.string() + extra);
+    EXPECT_EQ(r.code, 0) << r.output;
+    std::ifstream in(json);
+    return nlohmann::json::parse(in);
+  };
+  const nlohmann::json small = bench(" --envmap-size 64"), large = bench(" --envmap-size 128");
+  const Scene scene = makeBuiltinScene("sphere-over-checker", {});
+  EXPECT_EQ(small["objects"], scene.instances.size());
+  EXPECT_EQ(small["reflectors"], scene.reflectorInstances().size());
+  EXPECT_GT(small["gpu_bytes_shared"].get<int64_t>(), 0);
+  EXPECT_EQ(small["methods"]["raytrace"]["gpu_bytes"], 0);
+  // One RGBA16F cube with full mips grows by 6 faces x (128^2 - 64^2) x 4/3 texels x 8 bytes
+  // from 64- to 128-texel faces; envmap holds one such cube per level of its order (2) and a
+  // capture target of the face size, so it grows by 1 to 4 times that.
+  const double cube_growth = 6.0 * double((4 * 128 * 128 - 1) / 3 - (4 * 64 * 64 - 1) / 3) * 8.0;
+  const double grown = double(large["methods"]["envmap"]["gpu_bytes"].get<int64_t>() -
+                              small["methods"]["envmap"]["gpu_bytes"].get<int64_t>());
+  EXPECT_GE(grown, cube_growth);
+  EXPECT_LE(grown, 4.0 * cube_growth)
+      << "envmap gpu_bytes " << small["methods"]["envmap"]["gpu_bytes"] << " -> "
+      << large["methods"]["envmap"]["gpu_bytes"];
 }
 
 }  // namespace
