@@ -22,5 +22,7 @@ quat rotationZ(float degrees);
 
 // The built-in scene `gallery` (gallery_scene.cpp).
 Scene galleryScene(const SceneOptions& options);
+// The built-in scene `plaza` (plaza_scene.cpp).
+Scene plazaScene(const SceneOptions& options);
 
 }  // namespace mirage

@@ -414,6 +414,10 @@ constexpr BuiltinMaker kBuiltins[] = {
      "a room of mixed reflectors: two planar wall mirrors, a mirror sphere, a mirror teapot and a "
      "concave mirror among eleven diffuse objects of different sizes (per-reflector techniques)",
      galleryScene},
+    {"plaza",
+     "the scale case: 240 diffuse objects (over a million triangles) on a square among 20 "
+     "mirrors, 14 curved (12 spheres, 2 teapots) and 6 planar panels",
+     plazaScene},
 };
 
 const BuiltinMaker* findBuiltin(const std::string& name) {
