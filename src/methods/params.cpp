@@ -45,9 +45,9 @@ ParamSpec ParamSpec::choice(std::string name, std::vector<std::string> choices, 
           std::move(choices), std::move(help)};
 }
 
-ParamSpec ParamSpec::text(std::string name, std::string range, std::string help) {
+ParamSpec ParamSpec::text(std::string name, std::string range, std::string help, std::string def) {
   // A text parameter keeps its description of what it takes where a choice keeps its values.
-  return {std::move(name), Type::kText, 0, 0, "", {std::move(range)}, std::move(help)};
+  return {std::move(name), Type::kText, 0, 0, std::move(def), {std::move(range)}, std::move(help)};
 }
 
 std::string ParamSpec::rangeText() const {

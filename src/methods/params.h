@@ -36,7 +36,8 @@ struct ParamSpec {
   static ParamSpec choice(std::string name, std::span<const Choice<E>> choices, E def,
                           std::string help);
   // Free text that the method checks itself (mixed's assignment); `range` says what it takes.
-  static ParamSpec text(std::string name, std::string range, std::string help);
+  static ParamSpec text(std::string name, std::string range, std::string help,
+                        std::string def = "");
   // "1..4096", "0..1e+06", "on|off", or a text parameter's `range`.
   std::string rangeText() const;
   bool operator==(const ParamSpec&) const = default;

@@ -1,6 +1,7 @@
 // Small scenes built in code for tests.
 #pragma once
 
+#include <cmath>
 #include <string>
 
 #include "scene/builtin_scenes.h"
@@ -77,6 +78,29 @@ inline Scene spheresOverFloor(bool floor_only = false) {
     addBox(s, "box", {-1.8f, 0.5f, 0.6f}, vec3(0.5f), {0.85f, 0.2f, 0.15f}, 20.0f);
   }
   finishScene(s, vec3{0.5f, 2.6f, 5.0f}, vec3{0.5f, 0.8f, 0.0f}, 45.0f);
+  return s;
+}
+
+// A mirror sphere above a ring of `count` small diffuse spheres and cubes (alternating) over
+// nothing but the sky: the many-objects case of impostor groups, small enough to ray trace.
+inline Scene mirrorAmongObjects(int count) {
+  Scene s;
+  s.name = "mirror-among-objects";
+  const int ball = addMesh(s, procedural::sphere(0.16f, 32, 16));
+  const int cube = addMesh(s, procedural::box(vec3(0.13f)));
+  const int red = addMaterial(s, Material::diffuse("red", {0.85f, 0.2f, 0.15f}));
+  const int blue = addMaterial(s, Material::diffuse("blue", {0.2f, 0.35f, 0.85f}));
+  for (int k = 0; k < count; ++k) {
+    const float angle = 6.2831853f * float(k) / float(count);
+    const float radius = 1.6f + 0.5f * float(k % 3);
+    addInstance(
+        s, "object-" + std::to_string(k + 1), k % 2 ? cube : ball, k % 4 < 2 ? red : blue,
+        placeAt({radius * std::cos(angle), 0.25f * float(k % 2), radius * std::sin(angle)}));
+  }
+  const int sphere = addMesh(s, procedural::sphere(0.6f, 96, 48));
+  addInstance(s, "mirror", sphere, addMaterial(s, Material::mirror("mirror")),
+              placeAt({0.0f, 0.7f, 0.0f}));
+  finishScene(s, vec3{0.0f, 2.4f, 3.4f}, vec3{0.0f, 0.5f, 0.0f}, 45.0f);
   return s;
 }
 

@@ -10,7 +10,7 @@ namespace {
 class BillboardMethod final : public Method {
  public:
   explicit BillboardMethod(const MethodSetup& setup)
-      : stage_(billboardStageOptions(setup.params)),
+      : stage_(billboardStageOptions(setup.params), setup.gpu.scene()),
         last_bounce_reflective_(lastBounceReflective(setup.params)),
         program_(gpu::Program::graphics("render/shaders/scene.vert",
                                         "methods/billboard/billboard.frag")),

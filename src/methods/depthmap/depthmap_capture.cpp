@@ -11,8 +11,8 @@ namespace mirage {
 namespace {
 
 bool sameSpec(const DepthMapSpec& a, const DepthMapSpec& b) {
-  return a.instance == b.instance && a.centre == b.centre && a.from == b.from && a.up == b.up &&
-         a.radius == b.radius;
+  return a.instance == b.instance && a.members == b.members && a.centre == b.centre &&
+         a.from == b.from && a.up == b.up && a.radius == b.radius;
 }
 
 }  // namespace
@@ -134,6 +134,7 @@ void DepthMapCapture::render(GpuScene& gpu, ScenePasses& passes, const DepthMapS
   passes.begin(depthMapView(spec, gpu.instanceMatrix(spec.instance), options_), settings);
   (spec.reflector ? normal_program_ : program_).use();
   gpu.draw(spec.instance);
+  for (int member : spec.members) gpu.draw(member);
   if (with_depth) ++depth_captures_;
 }
 

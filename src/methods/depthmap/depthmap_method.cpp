@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <span>
 
+#include "gpu/memory.h"
 #include "methods/depthmap/depthmap_capture.h"
 #include "methods/depthmap/depthmap_shared.h"
 #include "methods/impostor/billboard_stage.h"
@@ -47,13 +48,51 @@ SrdmSettings srdmSettings(const ParamValues& params) {
   return s;
 }
 
+// What depth maps cost per group and besides: per map a colour layer (mip-mapped), a depth
+// layer and n SRDM layers, the SRDM array being the largest; the reflectors' maps of themselves
+// (--self-maps) are fixed.
+GroupCost depthMapCost(const Scene& scene, const DepthMapOptions& options,
+                       const SrdmSettings& srdm) {
+  int64_t self = 0;
+  if (options.self_maps > 0)
+    for (int r : scene.reflectorInstances())
+      if (!isPlanarInstance(scene, r, scene.instances[size_t(r)].matrixAt(0.0f)))
+        self += options.self_maps;
+  const int w = options.size;
+  const uint64_t map = gpu::storageBytes(GL_RGBA16F, w, w, 1, gpu::Texture::fullMipLevels(w)) +
+                       gpu::storageBytes(GL_DEPTH_COMPONENT32F, w, w, 1, 1) +
+                       gpu::storageBytes(GL_RGBA32F, (srdm.points + 1) / 2, w, srdm.domains, 1);
+  GroupCost cost;
+  cost.fixed_layers = self * srdm.domains;
+  cost.layers_per_group = int64_t(options.maps) * srdm.domains;
+  cost.fixed_bytes = uint64_t(self) * map;
+  cost.bytes_per_group = uint64_t(options.maps) * map;
+  return cost;
+}
+
+Grouping depthMapGroups(const MethodSetup& setup, const DepthMapOptions& options,
+                        const SrdmSettings& srdm) {
+  const Scene& scene = setup.gpu.scene();
+  const BillboardStageOptions stage = billboardStageOptions(setup.params);
+  return chooseGroups(scene, depthMappedObjects(scene), stage.groups,
+                      depthMapCost(scene, options, srdm), impostorGroupCaps(stage), "depth maps",
+                      "a smaller --srdm-n or --self-maps");
+}
+
+std::vector<std::vector<int>> memberLists(const Grouping& grouping) {
+  std::vector<std::vector<int>> lists;
+  for (const ImpostorGroup& g : grouping.groups) lists.push_back(g.members);
+  return lists;
+}
+
 class DepthMapMethod final : public Method {
  public:
   explicit DepthMapMethod(const MethodSetup& setup)
       : options_(depthMapOptions(setup.params)),
         srdm_(srdmSettings(setup.params)),
-        specs_(placeDepthMaps(setup.gpu.scene(), options_)),
-        stage_(stageOptions(setup.params, specs_)),
+        grouping_(depthMapGroups(setup, options_, srdm_)),
+        specs_(placeDepthMaps(setup.gpu.scene(), options_, memberLists(grouping_))),
+        stage_(stageOptions(setup.params, specs_), setup.gpu.scene()),
         capture_(options_, srdm_, setup.params.choice<SrdmBuilder>("srdm-builder", kSrdmBuilders)),
         recapture_(billboardRecapture(setup.params)),
         last_bounce_reflective_(lastBounceReflective(setup.params)),
@@ -107,6 +146,9 @@ class DepthMapMethod final : public Method {
   std::map<std::string, double> stats() const override {
     std::map<std::string, double> out = stage_.stats();
     out["depth_maps"] = double(specs_.size());
+    out["depthmap_groups"] = double(grouping_.groups.size());
+    out["depthmap_objects"] = double(grouping_.objects);
+    out["depthmap_layers"] = double(grouping_.layers);
     out["self_maps"] = double(std::count_if(specs_.begin(), specs_.end(),
                                             [](const DepthMapSpec& s) { return s.reflector; }));
     out["depthmap_color_captures"] = double(capture_.colorCaptures());
@@ -138,6 +180,7 @@ class DepthMapMethod final : public Method {
 
   DepthMapOptions options_;
   SrdmSettings srdm_;
+  Grouping grouping_;
   std::vector<DepthMapSpec> specs_;
   BillboardStage stage_;
   DepthMapCapture capture_;

@@ -30,20 +30,26 @@ struct DepthMapOptions {
 };
 
 struct DepthMapSpec {
-  int instance = -1;
-  int index = 0;           // among its object's maps
-  bool reflector = false;  // a reflector's map of itself: normals, not colours
+  int instance = -1;         // the object (a group's first member: its space holds the camera)
+  std::vector<int> members;  // a group's other members (still objects), captured with it
+  int index = 0;             // among its object's maps
+  bool reflector = false;    // a reflector's map of itself: normals, not colours
   // The camera in the object's space: it frames the mesh's bounding sphere (centre, radius)
   // from `from` (unit, from the centre towards the camera), with `up`.
   vec3 centre{0.0f}, from{0.0f, 0.0f, 1.0f}, up{0.0f, 1.0f, 0.0f};
   float radius = 1.0f;
 };
 
-// The non-planar diffuse instances, each with options.maps specs, then the non-planar
-// reflectors with options.self_maps (an instance's specs are consecutive).
-std::vector<DepthMapSpec> placeDepthMaps(const Scene& scene, const DepthMapOptions& options);
+// The non-planar diffuse instances: the objects depth maps stand for.
+std::vector<int> depthMappedObjects(const Scene& scene);
 
-// The diffuse instances that have depth maps (and so no billboards), once each.
+// The groups of depth-mapped objects (impostor_groups.h: each list's first member stands for
+// it; empty: one group an object), each with options.maps specs framing the group's bounds,
+// then the non-planar reflectors with options.self_maps (a group's specs are consecutive).
+std::vector<DepthMapSpec> placeDepthMaps(const Scene& scene, const DepthMapOptions& options,
+                                         const std::vector<std::vector<int>>& groups = {});
+
+// The diffuse instances that have depth maps (and so no billboards), once each, members too.
 std::vector<int> depthMappedInstances(const std::vector<DepthMapSpec>& specs);
 
 // The camera of `spec` with its object placed by `model`: near and far planes enclose the

@@ -162,6 +162,7 @@ void BillboardCapture::capture(GpuScene& gpu, ScenePasses& passes, const Billboa
   passes.begin(View(b.camera, {size_, size_}), settings);
   (reflective ? reflector_program_ : diffuse_program_).use();
   gpu.draw(b.object);
+  for (int member : b.members) gpu.draw(member);
 }
 
 }  // namespace mirage

@@ -126,20 +126,23 @@ std::vector<int> addPlanarBillboards(BillboardSet& set, const Scene& scene,
   return planar_index;
 }
 
-// Reflector r's list: the shared planar billboards, its own object billboards, then the
+// Reflector r's list: the shared planar billboards, its own group billboards, then the
 // reflective billboards of the other reflectors, all seen from its centre.
 void addReflectorList(BillboardSet& set, int r, const Scene& scene,
-                      const std::vector<int>& planar_index, const std::vector<int>& objects,
-                      float time, float fov, const ReflectorSpheres& reflectors) {
+                      const std::vector<int>& planar_index,
+                      const std::vector<std::vector<int>>& groups, float time, float fov,
+                      const ReflectorSpheres& reflectors) {
   const vec3 viewer = reflectors.centre[size_t(r)];
   shading::BillboardRange& range = set.ranges[size_t(r)];
   range.range.x = int(set.entries.size());
   for (int index : planar_index) set.entries.push_back(index);
-  for (int i : objects) {
-    const Bounds3 b = scene.instanceBounds(i, time);
+  for (const std::vector<int>& group : groups) {
+    Bounds3 b;
+    for (int i : group) b.extend(scene.instanceBounds(i, time));
     BillboardSpec spec = volumeBillboard(b.center(), b.radius(), viewer, fov);
     spec.kind = BillboardSpec::Kind::kObject;
-    spec.object = i;
+    spec.object = group.front();
+    spec.members.assign(group.begin() + 1, group.end());
     spec.reflector = r;
     spec.layer = set.surface_layers++;
     set.entries.push_back(int(set.billboards.size()));
@@ -165,27 +168,40 @@ void addReflectorList(BillboardSet& set, int r, const Scene& scene,
 
 }  // namespace
 
+std::vector<int> billboardedObjects(const Scene& scene, const BillboardSetOptions& options) {
+  std::vector<int> objects;
+  if (!options.objects) return objects;
+  for (int i = 0; i < int(scene.instances.size()); ++i)
+    if (!scene.isReflector(i) &&
+        std::find(options.excluded.begin(), options.excluded.end(), i) == options.excluded.end() &&
+        !isPlanarInstance(scene, i, scene.instances[size_t(i)].matrixAt(0.0f)))
+      objects.push_back(i);
+  return objects;
+}
+
 BillboardSet placeBillboards(const Scene& scene, float time, const BillboardSetOptions& options) {
   BillboardSet set;
   const ReflectorSpheres reflectors = reflectorSpheres(scene, time);
   set.environment_centre = reflectors.centroid;
-  std::vector<int> planar, objects;
+  std::vector<int> planar;
+  std::vector<std::vector<int>> groups;
   for (int i = 0; i < int(scene.instances.size()); ++i) {
     if (scene.isReflector(i)) continue;
     if (std::find(options.excluded.begin(), options.excluded.end(), i) != options.excluded.end())
       continue;
     if (isPlanarInstance(scene, i, scene.instances[size_t(i)].matrixAt(time)))
       planar.push_back(i);
-    else if (options.objects)
-      objects.push_back(i);
-    else
+    else if (!options.objects)
       set.unbillboarded.push_back(i);
+    else if (options.groups.empty())
+      groups.push_back({i});
   }
+  if (options.objects && !options.groups.empty()) groups = options.groups;
   const std::vector<int> planar_index =
       addPlanarBillboards(set, scene, planar, time, options, reflectors);
   set.ranges.resize(reflectors.instances.size());
   for (int r = 0; r < int(reflectors.instances.size()); ++r)
-    addReflectorList(set, r, scene, planar_index, objects, time, options.fov_degrees, reflectors);
+    addReflectorList(set, r, scene, planar_index, groups, time, options.fov_degrees, reflectors);
   return set;
 }
 

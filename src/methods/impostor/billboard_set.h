@@ -25,10 +25,11 @@ namespace mirage {
 struct BillboardSpec {
   enum class Kind { kPlanar, kObject, kReflective };
   Kind kind = Kind::kObject;
-  int object = -1;      // the instance it stands for
-  int reflector = -1;   // the reflector (0-based) whose rays test it; -1 for planar (all)
-  int represents = -1;  // reflective: the reflector (0-based) it stands for
-  CameraDesc camera;    // captures its texture: square image, up = edge_v, right = edge_u
+  int object = -1;           // the instance it stands for (a group's first member)
+  std::vector<int> members;  // a group's other members, captured with `object` (still objects)
+  int reflector = -1;        // the reflector (0-based) whose rays test it; -1 for planar (all)
+  int represents = -1;       // reflective: the reflector (0-based) it stands for
+  CameraDesc camera;         // captures its texture: square image, up = edge_v, right = edge_u
   vec3 corner{0.0f}, edge_u{0.0f}, edge_v{0.0f};
   // Reflective: added to the captured surface points (BillboardCapture carries an old capture
   // along with its reflector's motion).
@@ -44,6 +45,9 @@ struct BillboardSetOptions {
   // Instances that another impostor stands for (depth maps): no billboard, and not in the
   // captured environment.
   std::vector<int> excluded;
+  // Impostor groups (impostor_groups.h): the non-planar diffuse objects that share one
+  // billboard per reflector, each list's first member standing for it. Empty: one an object.
+  std::vector<std::vector<int>> groups;
 };
 
 struct BillboardSet {
@@ -67,6 +71,9 @@ struct BillboardSet {
 
   std::vector<shading::BillboardData> gpuData(const Scene& scene) const;
 };
+
+// The non-planar diffuse objects that get billboards of their own (or of their group's).
+std::vector<int> billboardedObjects(const Scene& scene, const BillboardSetOptions& options);
 
 // The billboards of `scene` with its instances placed at `time`.
 BillboardSet placeBillboards(const Scene& scene, float time, const BillboardSetOptions& options);

@@ -1,7 +1,9 @@
 #include "methods/impostor/billboard_stage.h"
 
+#include <algorithm>
 #include <span>
 
+#include "gpu/memory.h"
 #include "methods/probe_params.h"
 #include "methods/recapture_params.h"
 
@@ -15,7 +17,39 @@ constexpr Choice<bool> kAllObjects[] = {{"all", true}, {"planar", false}};
 // diffuse ones only.
 constexpr Choice<bool> kLastBounceReflective[] = {{"all", true}, {"diffuse", false}};
 
+// What the billboards cost per group and besides: one surface layer per group and reflector;
+// the planar objects' layers and the reflective billboards' (a surface and a surface-point
+// layer for each ordered pair of reflectors) are fixed.
+GroupCost billboardCost(const Scene& scene, const BillboardStageOptions& options, int objects) {
+  const int64_t reflectors = int64_t(scene.reflectorInstances().size());
+  int64_t planar = 0;
+  for (int i = 0; i < int(scene.instances.size()); ++i)
+    if (!scene.isReflector(i) &&
+        isPlanarInstance(scene, i, scene.instances[size_t(i)].matrixAt(0.0f)) &&
+        std::find(options.set.excluded.begin(), options.set.excluded.end(), i) ==
+            options.set.excluded.end())
+      ++planar;
+  const int size = options.billboard_size;
+  const uint64_t surface =
+      gpu::storageBytes(GL_RGBA16F, size, size, 1, gpu::Texture::fullMipLevels(size));
+  const uint64_t position = gpu::storageBytes(GL_RGBA32F, size, size, 1, 1);
+  const int64_t pairs = reflectors * (reflectors - 1);
+  GroupCost cost;
+  cost.fixed_layers = planar + pairs;
+  cost.layers_per_group = objects > 0 ? reflectors : 0;
+  cost.fixed_bytes = uint64_t(planar + pairs) * surface + uint64_t(pairs) * position;
+  cost.bytes_per_group = objects > 0 ? uint64_t(reflectors) * surface : 0;
+  return cost;
+}
+
 }  // namespace
+
+GroupCaps impostorGroupCaps(const BillboardStageOptions& options) {
+  GroupCaps caps;
+  caps.max_layers = driverArrayLayers();
+  caps.max_bytes = options.memory_cap;
+  return caps;
+}
 
 bool lastBounceReflective(const ParamValues& params) {
   return params.choice<bool>("last-bounce", kLastBounceReflective);
@@ -38,7 +72,15 @@ std::vector<ParamSpec> billboardStageParams() {
       ParamSpec::real("morph-height", 0.0, 1.0e6, 0.0,
                       "height of the transition walls that morph the ground billboard into the "
                       "environment (scene units; 0 = off)"),
-      envmapSizeParam()};
+      envmapSizeParam(),
+      ParamSpec::text("impostor-groups", "auto|per-object|1..4096",
+                      "impostor groups: objects clustered so that one billboard (per reflector) "
+                      "or one set of depth maps covers each group; auto keeps one per object "
+                      "while they fit the driver's texture layers, --impostor-memory and 64 "
+                      "groups per reflector, else merges the smallest and most distant",
+                      "auto"),
+      ParamSpec::integer("impostor-memory", 16, 1 << 20, 1024,
+                         "impostor textures auto grouping keeps within, in MiB")};
   for (ParamSpec& spec : billboardRecaptureParams()) params.push_back(std::move(spec));
   return params;
 }
@@ -51,6 +93,8 @@ BillboardStageOptions billboardStageOptions(const ParamValues& params) {
   o.billboard_size = params.integer("billboard-size");
   o.envmap_size = params.integer("envmap-size");
   o.recapture = billboardRecapture(params);
+  o.groups = parseGroupSetting(params.text("impostor-groups"), "--impostor-groups");
+  o.memory_cap = uint64_t(params.integer("impostor-memory")) << 20;
   return o;
 }
 
@@ -68,8 +112,16 @@ void drawReflectorsOnce(const FrameContext& frame, const gpu::Program& depth_pro
   glDepthMask(GL_TRUE);
 }
 
-BillboardStage::BillboardStage(const BillboardStageOptions& options)
-    : options_(options), capture_(options.billboard_size) {}
+BillboardStage::BillboardStage(const BillboardStageOptions& options, const Scene& scene)
+    : options_(options), capture_(options.billboard_size) {
+  const std::vector<int> objects = billboardedObjects(scene, options_.set);
+  grouping_ =
+      chooseGroups(scene, objects, options_.groups,
+                   billboardCost(scene, options_, int(objects.size())), impostorGroupCaps(options_),
+                   "billboards", "a smaller --billboard-size, or fewer reflectors (--reflectors)");
+  options_.set.groups.clear();
+  for (const ImpostorGroup& g : grouping_.groups) options_.set.groups.push_back(g.members);
+}
 
 void BillboardStage::update(FrameContext& frame) {
   GpuScene& gpu = frame.gpu;
@@ -135,7 +187,10 @@ std::map<std::string, double> BillboardStage::stats() const {
           {"reflective_billboards", double(reflective)},
           {"environment_captures", double(env_captures_)},
           {"billboards_pending", double(capture_.pending())},
-          {"billboard_drift_degrees", double(capture_.largestDriftDegrees())}};
+          {"billboard_drift_degrees", double(capture_.largestDriftDegrees())},
+          {"impostor_objects", double(grouping_.objects)},
+          {"impostor_groups", double(grouping_.groups.size())},
+          {"billboard_layers", double(set_.surface_layers + set_.position_layers)}};
 }
 
 // Diffuse objects without impostors (and the ground, when it morphs into the environment) are

@@ -15,6 +15,7 @@
 #include "gpu/texture.h"
 #include "methods/impostor/billboard_capture.h"
 #include "methods/impostor/billboard_set.h"
+#include "methods/impostor/impostor_groups.h"
 #include "methods/method.h"
 #include "render/cube_capture.h"
 
@@ -22,14 +23,18 @@ namespace mirage {
 
 struct BillboardStageOptions {
   BillboardSetOptions set;
-  int billboard_size = 256;   // texels per billboard side
-  int envmap_size = 256;      // face size of the captured environment
-  RecapturePolicy recapture;  // moving scenes: when billboards are re-captured
+  int billboard_size = 256;          // texels per billboard side
+  int envmap_size = 256;             // face size of the captured environment
+  RecapturePolicy recapture;         // moving scenes: when billboards are re-captured
+  GroupSetting groups;               // --impostor-groups
+  uint64_t memory_cap = 1ull << 30;  // --impostor-memory, bytes
 };
 
 // The parameters every impostor method takes for its billboards, and the options they make.
 std::vector<ParamSpec> billboardStageParams();
 BillboardStageOptions billboardStageOptions(const ParamValues& params);
+// The caps of --impostor-groups auto: the driver's texture layers, --impostor-memory.
+GroupCaps impostorGroupCaps(const BillboardStageOptions& options);
 // --last-bounce all: the last bounce tests reflective billboards too (a hit shows its base colour).
 bool lastBounceReflective(const ParamValues& params);
 
@@ -41,7 +46,9 @@ void drawReflectorsOnce(const FrameContext& frame, const gpu::Program& depth_pro
 
 class BillboardStage {
  public:
-  explicit BillboardStage(const BillboardStageOptions& options);
+  // Groups the scene's billboarded objects (--impostor-groups; needs a current context for the
+  // driver's limits): throws GpuError when not even one group fits, saying what would.
+  BillboardStage(const BillboardStageOptions& options, const Scene& scene);
 
   // Places the billboards and re-captures those that drifted beyond the tolerances since their
   // capture, within the budget (nothing for a camera move; every one the first time).
@@ -62,6 +69,7 @@ class BillboardStage {
   void updateEnvironment(FrameContext& frame);
 
   BillboardStageOptions options_;
+  Grouping grouping_;
   BillboardCapture capture_;
   BillboardSet set_;
   gpu::Buffer billboards_, ranges_, entries_;
