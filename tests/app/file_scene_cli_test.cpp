@@ -59,6 +59,41 @@ TEST_F(FileSceneCli, RendersTheFilesCamerasAtTheirAspect) {
   EXPECT_GT(meanAbsDifference(frames[0], frames[1]), 0.05);
 }
 
+// A model of many parts (the room above with 118 more boxes, 119 diffuse parts in all) renders
+// with depth maps: 119 maps x 60 SRDM layers are beyond any driver's 2048 layers, so the objects
+// share maps in impostor groups instead of the method falling back to envmap; per object, it
+// falls back and says what would fit.
+TEST_F(FileSceneCli, AModelOfManyPartsRendersWithDepthMaps) {
+  TempDir dir;
+  QuadScene s = cameraScene();
+  nlohmann::json& nodes = s.doc["nodes"];
+  nlohmann::json& roots = s.doc["scenes"][0]["nodes"];
+  for (int k = 0; k < 118; ++k) {
+    roots.push_back(nodes.size());
+    const double x = -2.6 + 0.4 * (k % 14), z = -1.0 + 0.45 * (k / 14);
+    nodes.push_back({{"name", fmt::format("part_{}", k)},
+                     {"mesh", 1},
+                     {"translation", {x, 0.1, z}},
+                     {"scale", {0.2, 0.2, 0.2}}});
+  }
+  const std::string scene = writeGltf(dir, s, "parts.gltf");
+  const std::string out = dir.file("parts.png");
+  CliResult r = runMirage("render --scene " + scene +
+                          " --camera cam_a --method depthmap --size 96x64 -o " + out);
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_EQ(r.output.find("cannot run on this OpenGL driver"), std::string::npos) << r.output;
+  r = runMirage("render --scene " + scene +
+                " --camera cam_a --method depthmap --impostor-groups per-object --size 96x64 -o " +
+                out);
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("--impostor-groups auto (34 groups) would fit"), std::string::npos)
+      << r.output;
+  r = runMirage("render --scene " + scene + " --method depthmap --impostor-groups some -o " + out);
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("--impostor-groups 'some' is not allowed"), std::string::npos)
+      << r.output;
+}
+
 TEST_F(FileSceneCli, GivenSizeWins) {
   TempDir dir;
   const std::string out = dir.file("a.png");

@@ -12,20 +12,24 @@
 namespace mirage::shading {
 namespace {
 // The pyramid the march reads: level 0 the depth buffer padded to powers of two with 1
-// ("nothing"), each level above the minimum of the four cells below (its definition).
+// ("nothing"), each level above the minimum of the four cells below (its definition); beside it
+// the farthest drawn depths (0: nothing drawn), each level the maximum of the four below.
 struct CpuPyramid {
-  std::vector<std::vector<float>> levels;
+  std::vector<std::vector<float>> levels, far_levels;
   std::vector<ivec2> sizes;
-  float at(int level, int x, int y) const {
+  float at(int level, int x, int y, bool far = false) const {
     const ivec2 s = sizes[size_t(level)];
-    if (x < 0 || y < 0 || x >= s.x || y >= s.y) return 1.0f;
-    return levels[size_t(level)][size_t(y * s.x + x)];
+    if (x < 0 || y < 0 || x >= s.x || y >= s.y) return far ? 0.0f : 1.0f;
+    return (far ? far_levels : levels)[size_t(level)][size_t(y * s.x + x)];
   }
 };
 CpuPyramid g_pyramid;
 }  // namespace
 inline float ssr_hiz(int level, int x, int y) {
   return g_pyramid.at(level, x, y);
+}
+inline float ssr_hiz_far(int level, int x, int y) {
+  return g_pyramid.at(level, x, y, true);
 }
 }  // namespace mirage::shading
 
@@ -45,11 +49,13 @@ sh::CpuPyramid buildPyramid(const std::vector<float>& depth, ivec2 size) {
   sh::CpuPyramid p;
   ivec2 s = HiZPyramid::paddedSize(size);
   p.levels.push_back(paddedDepth(depth, size, s));
+  p.far_levels.push_back(drawnDepth(p.levels.back()));
   p.sizes.push_back(s);
   while (s.x > 1 || s.y > 1) {
     const ivec2 below = s;
     s = glm::max(s / 2, ivec2(1));
     p.levels.push_back(minLevelAbove(p.levels.back(), below, s));
+    p.far_levels.push_back(maxLevelAbove(p.far_levels.back(), below, s));
     p.sizes.push_back(s);
   }
   return p;

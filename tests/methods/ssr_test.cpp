@@ -21,14 +21,16 @@ namespace {
 
 class SsrGpu : public GlTest {};
 
-std::vector<float> readLevel(const gpu::Texture& t, int level, ivec2 size) {
+// One channel of a level: GL_RED the nearest depths, GL_GREEN the farthest drawn.
+std::vector<float> readLevel(const gpu::Texture& t, int level, ivec2 size,
+                             GLenum channel = GL_RED) {
   std::vector<float> out(size_t(size.x * size.y));
-  glGetTextureImage(t.id(), level, GL_RED, GL_FLOAT, GLsizei(out.size() * sizeof(float)),
+  glGetTextureImage(t.id(), level, channel, GL_FLOAT, GLsizei(out.size() * sizeof(float)),
                     out.data());
   return out;
 }
 
-TEST_F(SsrGpu, EachPyramidLevelIsTheMinimumOfTheFourBelow) {
+TEST_F(SsrGpu, EachPyramidLevelIsTheMinimumAndTheFarthestDrawnOfTheFourBelow) {
   const ivec2 screen(75, 41);  // not powers of two: the pyramid pads to 128 x 64
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
@@ -48,15 +50,24 @@ TEST_F(SsrGpu, EachPyramidLevelIsTheMinimumOfTheFourBelow) {
   // past its edges.
   ivec2 below_size = HiZPyramid::paddedSize(screen);
   std::vector<float> below = paddedDepth(depth, screen, below_size);
+  std::vector<float> below_far = drawnDepth(below);
+  ASSERT_EQ(readLevel(pyramid.levelZero(), 0, screen, GL_GREEN),
+            drawnDepth(std::vector<float>(depth)));
   for (int level = 1; level < pyramid.levels(); ++level) {
     const ivec2 size = HiZPyramid::levelSize(screen, level);
     const std::vector<float> here = readLevel(pyramid.texture(), level - 1, size);
+    const std::vector<float> here_far = readLevel(pyramid.texture(), level - 1, size, GL_GREEN);
     const std::vector<float> want = minLevelAbove(below, below_size, size);
+    const std::vector<float> want_far = maxLevelAbove(below_far, below_size, size);
     for (int y = 0; y < size.y; ++y)
-      for (int x = 0; x < size.x; ++x)
+      for (int x = 0; x < size.x; ++x) {
         ASSERT_EQ(here[size_t(y * size.x + x)], want[size_t(y * size.x + x)])
             << "level " << level << " at " << x << "," << y;
+        ASSERT_EQ(here_far[size_t(y * size.x + x)], want_far[size_t(y * size.x + x)])
+            << "farthest, level " << level << " at " << x << "," << y;
+      }
     below = here;
+    below_far = here_far;
     below_size = size;
   }
 }

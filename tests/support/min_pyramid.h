@@ -1,5 +1,7 @@
-// The min-depth pyramid as the ssr tests define it, on the CPU: level 0 the depth buffer padded
-// to `padded` with 1 ("nothing"), every level above the minimum of the up to four cells below.
+// The pyramid as the ssr tests define it, on the CPU: level 0 the depth buffer padded to
+// `padded` with 1 ("nothing"), every level above the minimum of the up to four cells below; and
+// beside it the farthest drawn depths: level 0 the depth where drawn (< 1), else 0, every level
+// above the maximum of the cells below.
 #pragma once
 
 #include <algorithm>
@@ -30,6 +32,30 @@ inline std::vector<float> minLevelAbove(const std::vector<float>& below, ivec2 b
         for (int i = 0; i < 2; ++i)
           if (2 * x + i < below_size.x && 2 * y + j < below_size.y)
             m = std::min(m, below[size_t((2 * y + j) * below_size.x + 2 * x + i)]);
+      level[size_t(y * size.x + x)] = m;
+    }
+  return level;
+}
+
+// The farthest-drawn level 0 of a padded depth buffer: d where d < 1, else 0.
+inline std::vector<float> drawnDepth(const std::vector<float>& padded) {
+  std::vector<float> out(padded.size());
+  for (size_t i = 0; i < padded.size(); ++i) out[i] = padded[i] < 1.0f ? padded[i] : 0.0f;
+  return out;
+}
+
+// The farthest-drawn level of `size` above `below`: each cell the maximum of the cells below
+// (those that exist; 0 when none is drawn).
+inline std::vector<float> maxLevelAbove(const std::vector<float>& below, ivec2 below_size,
+                                        ivec2 size) {
+  std::vector<float> level(size_t(size.x * size.y), 0.0f);
+  for (int y = 0; y < size.y; ++y)
+    for (int x = 0; x < size.x; ++x) {
+      float m = 0.0f;
+      for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i)
+          if (2 * x + i < below_size.x && 2 * y + j < below_size.y)
+            m = std::max(m, below[size_t((2 * y + j) * below_size.x + 2 * x + i)]);
       level[size_t(y * size.x + x)] = m;
     }
   return level;

@@ -22,12 +22,12 @@ void HiZPyramid::build(const gpu::Texture& depth, ivec2 screen) {
   const ivec2 padded = paddedSize(screen);
   const int levels = gpu::Texture::fullMipLevels(std::max(padded.x, padded.y));
   if (screen != screen_ || level_zero_.id() == 0) {
-    level_zero_ = gpu::Texture::create2D(GL_R32F, screen.x, screen.y);
+    level_zero_ = gpu::Texture::create2D(GL_RG32F, screen.x, screen.y);
     level_zero_.setFilter(GL_NEAREST, GL_NEAREST);
     texture_ = {};
     if (levels > 1) {  // a 1x1 screen: level 0 is the whole pyramid
       const ivec2 first = levelSize(screen, 1);
-      texture_ = gpu::Texture::create2D(GL_R32F, first.x, first.y, levels - 1);
+      texture_ = gpu::Texture::create2D(GL_RG32F, first.x, first.y, levels - 1);
       texture_.setFilter(GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST);
     }
     screen_ = screen;
@@ -44,9 +44,9 @@ void HiZPyramid::build(const gpu::Texture& depth, ivec2 screen) {
     const GLuint out = level == 0 ? level_zero_.id() : texture_.id();
     if (level > 0)
       glBindImageTexture(MIRAGE_IMAGE_SSR_LEVEL_IN, in, std::max(level - 2, 0), GL_FALSE, 0,
-                         GL_READ_ONLY, GL_R32F);
+                         GL_READ_ONLY, GL_RG32F);
     glBindImageTexture(MIRAGE_IMAGE_SSR_LEVEL_OUT, out, std::max(level - 1, 0), GL_FALSE, 0,
-                       GL_WRITE_ONLY, GL_R32F);
+                       GL_WRITE_ONLY, GL_RG32F);
     glDispatchCompute(GLuint((size.x + MIRAGE_SSR_GROUP - 1) / MIRAGE_SSR_GROUP),
                       GLuint((size.y + MIRAGE_SSR_GROUP - 1) / MIRAGE_SSR_GROUP), 1);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);

@@ -1,11 +1,12 @@
-// Method `ssr`: the hierarchical-Z pyramid of a depth buffer — a min-depth mip chain, so that a
-// reflected ray's march can skip a whole 2^l x 2^l cell whose nearest depth it stays in front
-// of (ssr_march_shared.h). The pyramid is a power of two a side (pixels past the screen count
-// as 1, "nothing"), so that a cell of level l covers pixels [2^l c, 2^l (c + 1)) on every level.
-// Level 0 is a copy of the depth buffer (levelZero(), the screen's size): the march reads it
-// while the frame's depth is attached to the draw framebuffer for the depth test, and sampling
-// an attachment is a feedback loop, undefined in OpenGL 4.5 (§9.3.1) even with depth writes off.
-// texture() holds levels 1 and up (its mip level i - 1 is the pyramid's level i).
+// Method `ssr`: the hierarchical-Z pyramid of a depth buffer — a mip chain of each cell's
+// nearest depth (r) and farthest drawn depth (g), so that a reflected ray's march can skip a
+// whole 2^l x 2^l cell whose nearest depth it stays in front of, or whose surfaces it passes
+// behind beyond the thickness (ssr_march_shared.h). The pyramid is a power of two a side (pixels
+// past the screen count as 1, "nothing"), so that a cell of level l covers pixels [2^l c, 2^l (c +
+// 1)) on every level. Level 0 is a copy of the depth buffer (levelZero(), the screen's size): the
+// march reads it while the frame's depth is attached to the draw framebuffer for the depth test,
+// and sampling an attachment is a feedback loop, undefined in OpenGL 4.5 (§9.3.1) even with depth
+// writes off. texture() holds levels 1 and up (its mip level i - 1 is the pyramid's level i).
 #pragma once
 
 #include "gpu/program.h"
@@ -33,7 +34,7 @@ class HiZPyramid {
 
  private:
   gpu::Program program_;
-  gpu::Texture level_zero_;  // r32f, the screen's size
+  gpu::Texture level_zero_;  // rg32f, the screen's size
   gpu::Texture texture_;
   ivec2 screen_{0};
 };

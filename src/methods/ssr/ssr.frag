@@ -28,12 +28,15 @@ uniform vec3 u_forward;  // the view direction (world)
 
 layout(binding = MIRAGE_UNIT_SSR_DEPTH) uniform sampler2D u_depth;
 
-// Level 0 is the depth buffer's copy (1 past its edges), levels 1 and up the pyramid's texture.
-float ssr_hiz(int level, int x, int y) {
-  if (level > 0) return texelFetch(u_hiz, ivec2(x, y), level - 1).r;
-  if (x < 0 || y < 0 || x >= u_size.x || y >= u_size.y) return 1.0f;
-  return texelFetch(u_depth, ivec2(x, y), 0).r;
+// Level 0 is the depth buffer's copy (nothing past its edges), levels 1 and up the pyramid's
+// texture: r the nearest depth, g the farthest drawn.
+vec2 ssr_cell(int level, int x, int y) {
+  if (level > 0) return texelFetch(u_hiz, ivec2(x, y), level - 1).rg;
+  if (x < 0 || y < 0 || x >= u_size.x || y >= u_size.y) return vec2(1.0f, 0.0f);
+  return texelFetch(u_depth, ivec2(x, y), 0).rg;
 }
+float ssr_hiz(int level, int x, int y) { return ssr_cell(level, x, y).r; }
+float ssr_hiz_far(int level, int x, int y) { return ssr_cell(level, x, y).g; }
 
 #include "methods/ssr/ssr_march_shared.h"
 
@@ -80,6 +83,7 @@ vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflecto
   ivec2 pixel;
   int steps;
   float t = ssr_march(from, to, u_levels, u_max_steps, u_thickness, u_near, u_far, pixel, steps);
+  atomicAdd(ssr_counts[MIRAGE_SSR_STEPS], uint(steps));
   if (t < 0.0f) {
     if (steps >= u_max_steps)
       count(MIRAGE_SSR_OUT_OF_STEPS);

@@ -1,17 +1,21 @@
 // Method `ssr`: the reflected ray's march through the hierarchical-Z pyramid of the depth
 // buffer, shared by the reflection shader and the tests (which run it against a brute-force
 // march over every pixel). The includer defines, before including this file:
-//   float ssr_hiz(int level, int x, int y);  // the nearest window depth of cell (x, y) of
-//                                            // `level` (level 0: the depth buffer; >= 1: none)
+//   float ssr_hiz(int level, int x, int y);      // the nearest window depth of cell (x, y) of
+//                                                // `level` (level 0: the depth buffer; 1: none)
+//   float ssr_hiz_far(int level, int x, int y);  // the farthest depth drawn there (< 1), 0 when
+//                                                // nothing is drawn
 //
 // The ray is a segment in screen space: x, y in window pixels (bottom-left origin, as
 // gl_FragCoord and the pyramid's texels), z the window depth, which is affine in screen space along
 // a projected line — so the march steps in 2D and reads z linearly. Level l of the pyramid has
 // cells of 2^l pixels, each the minimum of the (up to) four cells below it. A cell is skipped whole
-// when the ray's deepest point inside it is still in front of the cell's nearest depth: nothing in
-// it can be hit, and the march climbs a level; otherwise it descends, down to single pixels, where
-// the hit test is made. It finds the first pixel along the ray that passes that test — the same
-// pixel a march over every pixel finds — in O(log) steps over empty stretches.
+// when the ray's deepest point inside it is still in front of the cell's nearest depth, or when
+// its nearest point is behind the cell's farthest drawn depth by more than the thickness (it
+// passes behind everything there): nothing in it can be hit, and the march climbs a level;
+// otherwise it descends, down to single pixels, where the hit test is made. It finds the first
+// pixel along the ray that passes that test — the same pixel a march over every pixel finds — in
+// O(log) steps over empty stretches.
 #ifndef MIRAGE_METHODS_SSR_SSR_MARCH_SHARED_H
 #define MIRAGE_METHODS_SSR_SSR_MARCH_SHARED_H
 
@@ -38,6 +42,18 @@ SHARED_FN bool ssr_pixel_hit(float za, float zb, float d, float thickness, float
   if (za <= d) return true;
   return ssr_view_depth(za, near_plane, far_plane) - ssr_view_depth(d, near_plane, far_plane) <=
          thickness;
+}
+
+// A cell whose drawn depths are at most `farthest` (0: none drawn) cannot be hit by a ray whose
+// nearest window depth in it is `z` when the ray is behind all of them by more than the
+// thickness: every pixel fails ssr_pixel_hit (it enters behind, beyond the thickness), since
+// view depth grows with window depth. The skip is exact: the march still finds the first pixel
+// that passes the test.
+SHARED_FN bool ssr_behind_all(float z, float farthest, float thickness, float near_plane,
+                              float far_plane) {
+  return z > farthest && ssr_view_depth(z, near_plane, far_plane) -
+                                 ssr_view_depth(farthest, near_plane, far_plane) >
+                             thickness;
 }
 
 // The parameter along from -> to where the ray leaves the cell of size `cell` holding the point
@@ -80,8 +96,10 @@ SHARED_FN float ssr_march(vec3 from, vec3 to, int levels, int max_steps, float t
     float za = p.z;
     float zb = from.z + exit_t * (to.z - from.z);
     float nearest = ssr_hiz(level, c.x, c.y);
-    if (max(za, zb) < nearest) {
-      // Nothing in this cell is as near as the ray gets: skip it and try a coarser cell.
+    if (max(za, zb) < nearest || ssr_behind_all(min(za, zb), ssr_hiz_far(level, c.x, c.y),
+                                                thickness, near_plane, far_plane)) {
+      // Nothing in this cell is as near as the ray gets, or the ray passes behind all of it:
+      // skip it and try a coarser cell.
       t = exit_t + nudge;
       if (level + 1 < levels) level += 1;
     } else if (level > 0) {

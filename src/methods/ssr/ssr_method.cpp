@@ -147,6 +147,7 @@ class SsrMethod final : public Method {
     s["ssr_no_hit_fraction"] = fraction(MIRAGE_SSR_NO_HIT);
     s["ssr_back_face_fraction"] = fraction(MIRAGE_SSR_BACK_FACE);
     s["ssr_out_of_steps_fraction"] = fraction(MIRAGE_SSR_OUT_OF_STEPS);
+    s["ssr_steps_per_ray"] = double(c[MIRAGE_SSR_STEPS]) * share;
     // Every ray without a hit is the fallback's whole; a faded hit its share.
     const double missed = pixels - double(c[MIRAGE_SSR_HITS]) - double(c[MIRAGE_SSR_FADED]);
     s["ssr_fallback_fraction"] = (missed + double(c[MIRAGE_SSR_FADED_WEIGHT]) / 1024.0) * share;
@@ -192,7 +193,7 @@ MethodEntry ssrMethodEntry() {
       envmapSizeParam(), probeProxyParam()};
   for (ParamSpec& spec : probeRecaptureParams()) entry.info.params.push_back(std::move(spec));
   entry.info.counters = {"cube_captures", "capture_passes"};
-  entry.info.frame_stats = {"ssr_hit_fraction", "ssr_fallback_fraction"};
+  entry.info.frame_stats = {"ssr_hit_fraction", "ssr_fallback_fraction", "ssr_steps_per_ray"};
   entry.create = factoryOf<SsrMethod>();
   return entry;
 }

@@ -3,7 +3,7 @@
 #define MIRAGE_METHODS_SSR_SSR_SHARED_H
 
 // Texture units after MIRAGE_UNIT_METHOD (4), which the fallback method's probes hold.
-#define MIRAGE_UNIT_SSR_HIZ 5     // r32f, mip levels: the hierarchical-Z pyramid's levels 1..
+#define MIRAGE_UNIT_SSR_HIZ 5     // rg32f, mip levels: the hierarchical-Z pyramid's levels 1..
 #define MIRAGE_UNIT_SSR_COLOR 6   // rgba16f: the direct view's colour (reflectors at base colour)
 #define MIRAGE_UNIT_SSR_NORMAL 7  // rgba16f: xyz the normal facing the viewer, w 1 on reflectors
 #define MIRAGE_UNIT_SSR_DEPTH 8   // the frame's depth (the build's input); the march: its copy
@@ -22,6 +22,7 @@
 #define MIRAGE_SSR_OUT_OF_STEPS 5  // ran out of --ssr-steps
 #define MIRAGE_SSR_OUTCOMES 6
 #define MIRAGE_SSR_FADED_WEIGHT 6  // sum over the faded pixels of the fallback's weight, x 1024
-#define MIRAGE_SSR_COUNTS 7
+#define MIRAGE_SSR_STEPS 7         // sum over the pixels of the pyramid cells their march visited
+#define MIRAGE_SSR_COUNTS 8
 
 #endif  // MIRAGE_METHODS_SSR_SSR_SHARED_H
