@@ -21,7 +21,9 @@ void addSceneOptions(CLI::App* app, SceneArgs& args) {
                   "built-in or asset scene name (see `mirage scenes`), a .json scene file, or a "
                   "mesh file (.ply, .ply.gz, .obj, .gltf, .glb, ...)")
       ->required();
-  app->add_option("--reflectors", args.reflectors, "spheres9: keep the first N reflectors (1..9)");
+  app->add_option("--reflectors", args.reflectors,
+                  "spheres9, plaza: keep the first N reflectors (1..9, 1..32)");
+  app->add_option("--objects", args.objects, "plaza: lay out N diffuse objects (10..1000)");
   app->add_option("--camera", args.camera, "the scene camera to use (default: the first)");
   app->add_option("--camera-path", args.camera_path,
                   "a camera file (one camera of the scene format: still, or a path of keys, as "
@@ -98,6 +100,7 @@ Scene loadSceneFromArgs(SceneArgs& args) {
   setMaxMemory(parseByteSize("--max-memory", args.max_memory));
   SceneOptions options;
   options.reflectors = args.reflectors;
+  options.objects = args.objects;
   if (!args.stage.empty()) {
     options.stage = findChoice<StageMode>(kStageModes, args.stage);
     if (!options.stage)

@@ -19,6 +19,7 @@ namespace mirage::app {
 struct SceneArgs {
   std::string scene;
   int reflectors = -1;
+  int objects = -1;
   std::string camera;
   std::string camera_path;  // a camera file (scene/camera_file.h), used instead of the scene's
   std::string stage;        // model files: auto|on|off (StageMode); empty: not given

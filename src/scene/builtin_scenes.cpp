@@ -416,7 +416,8 @@ constexpr BuiltinMaker kBuiltins[] = {
      galleryScene},
     {"plaza",
      "the scale case: 240 diffuse objects (over a million triangles) on a square among 20 "
-     "mirrors, 14 curved (12 spheres, 2 teapots) and 6 planar panels",
+     "mirrors, 14 curved (12 spheres, 2 teapots) and 6 planar panels (--objects N lays out N, "
+     "--reflectors N keeps N of up to 32)",
      plazaScene},
 };
 
@@ -445,8 +446,10 @@ Scene makeBuiltinScene(const std::string& name, const SceneOptions& options) {
   const BuiltinMaker* maker = findBuiltin(name);
   if (!maker) throwInput("unknown built-in scene '{}'", name);
   Scene s = maker->make(options);
-  if (options.reflectors >= 0 && name != "spheres9")
-    throwInput("--reflectors applies to spheres9 only, not to '{}'", name);
+  if (options.reflectors >= 0 && name != "spheres9" && name != "plaza")
+    throwInput("--reflectors applies to spheres9 and plaza only, not to '{}'", name);
+  if (options.objects >= 0 && name != "plaza")
+    throwInput("--objects applies to plaza only, not to '{}'", name);
   s.name = name;
   s.description = maker->description;
   s.source = "builtin:" + name;

@@ -19,7 +19,8 @@ inline constexpr Choice<StageMode> kStageModes[] = {
     {"auto", StageMode::kAuto}, {"on", StageMode::kOn}, {"off", StageMode::kOff}};
 
 struct SceneOptions {
-  int reflectors = -1;  // spheres9: keep the first N reflectors (1..9); -1: all
+  int reflectors = -1;  // spheres9 (1..9), plaza (1..32): keep the first N reflectors; -1: all
+  int objects = -1;     // plaza: N diffuse objects (10..1000); -1: the scene's own
   // Model files only (--stage); nothing: not given, which is kAuto.
   std::optional<StageMode> stage;
 };

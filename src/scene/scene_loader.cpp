@@ -90,7 +90,8 @@ Scene loadScene(const std::string& spec, const SceneOptions& options) {
   }
   auto notSpheres9 = [&] {
     if (options.reflectors >= 0)
-      throwInput("--reflectors applies to spheres9 only, not to '{}'", spec);
+      throwInput("--reflectors applies to spheres9 and plaza only, not to '{}'", spec);
+    if (options.objects >= 0) throwInput("--objects applies to plaza only, not to '{}'", spec);
   };
   for (const AssetScene& a : assetScenes()) {
     if (a.name != spec) continue;

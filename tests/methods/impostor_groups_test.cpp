@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <set>
+#include <tuple>
 
 #include "core/error.h"
 #include "methods/depthmap/depthmap_set.h"
@@ -175,20 +176,28 @@ TEST(ImpostorGroups, AutoMergesWhatTheDriverCannotHoldAndPerObjectSaysWhatWould)
 
 class ImpostorGroupImages : public GlTest {};
 
+// spheres9 at 240x160, order 2, with a renderer: a method's frame by its parameters.
+struct Spheres9Frames {
+  Scene scene = makeBuiltinScene("spheres9");
+  ivec2 size{240, 160};
+  FrameSettings settings;  // order 2
+  FrameRenderer renderer{scene, size};
+
+  std::unique_ptr<Method> render(const char* method,
+                                 const std::map<std::string, std::string>& params) {
+    auto m = renderer.createMethod(method, params, settings);
+    renderer.render(*m, View(scene.camera(), size), 0.0f, settings);
+    return m;
+  }
+};
+
 TEST_F(ImpostorGroupImages, AutoIsThePerObjectFrameWhereEveryObjectFits) {
-  const Scene scene = makeBuiltinScene("spheres9");
-  const ivec2 size{240, 160};
-  FrameSettings settings;
-  settings.order = 2;
-  FrameRenderer renderer(scene, size);
-  const View view(scene.camera(), size);
+  Spheres9Frames frames;
   for (const char* method : {"billboard", "depthmap"}) {
-    auto automatic = renderer.createMethod(method, {}, settings);
-    renderer.render(*automatic, view, 0.0f, settings);
-    const RenderedFrame a = renderer.read();
-    auto per_object = renderer.createMethod(method, {{"impostor-groups", "per-object"}}, settings);
-    renderer.render(*per_object, view, 0.0f, settings);
-    const RenderedFrame b = renderer.read();
+    frames.render(method, {});
+    const RenderedFrame a = frames.renderer.read();
+    frames.render(method, {{"impostor-groups", "per-object"}});
+    const RenderedFrame b = frames.renderer.read();
     EXPECT_TRUE(a.color.pixels() == b.color.pixels()) << method;
   }
 }
@@ -211,6 +220,8 @@ TEST_F(ImpostorGroupImages, DepthMapsRenderWhatPerObjectCannotHold) {
       renderWithTruth(scene, "depthmap", size, settings, {}, 0.0f, kMatchedSsaa);
   EXPECT_EQ(automatic.stats.at("depthmap_groups"), 34.0);
   EXPECT_EQ(automatic.stats.at("depthmap_objects"), 48.0);
+  // A ray tests each group's maps once (no billboard but for them: no floor, one reflector).
+  EXPECT_EQ(automatic.stats.at("impostor_candidates_per_ray"), 34.0);
   const RenderPair envmap =
       renderWithTruth(scene, "envmap", size, settings, {}, 0.0f, kMatchedSsaa);
   std::printf("reflector PSNR: depthmap in 34 groups %.2f dB, envmap %.2f dB\n",
@@ -234,6 +245,9 @@ TEST_F(ImpostorGroupImages, BillboardGroupsTradeErrorForCountMonotonically) {
     const double expected = groups == std::string("per-object") ? 48.0 : std::stod(groups);
     EXPECT_EQ(p.stats.at("impostor_groups"), expected);
     EXPECT_EQ(p.stats.at("diffuse_billboards"), expected);
+    // One reflector, no planar object, order 1: a ray tests the groups' billboards, no more.
+    EXPECT_EQ(p.stats.at("impostor_candidates_per_ray"), expected);
+    EXPECT_EQ(p.stats.at("impostor_rays_per_pixel"), 1.0);
     psnr.push_back(reflectorPsnr(p));
     std::printf("reflector PSNR, billboard in %s groups: %.2f dB\n", groups, psnr.back());
   }
@@ -241,6 +255,25 @@ TEST_F(ImpostorGroupImages, BillboardGroupsTradeErrorForCountMonotonically) {
   const double probe = reflectorPsnr(
       renderWithTruth(scene, "envmap-infinite", size, settings, {}, 0.0f, kMatchedSsaa));
   EXPECT_GT(psnr[1], probe + 3.0);
+}
+
+TEST_F(ImpostorGroupImages, CountsTheImpostorsEachRayTests) {
+  // spheres9 at order 2: every ray, first bounce or second, tests its reflector's list, the
+  // floor's billboard, one per group of the six other objects and the eight other reflectors'
+  // reflective billboards (the last bounce tests them too: --last-bounce all); depthmap tests
+  // the six objects through their maps instead. Fewer groups, fewer tests.
+  Spheres9Frames frames;
+  for (const auto& [method, groups, expected] :
+       {std::tuple{"billboard", "auto", 15.0}, std::tuple{"billboard", "2", 11.0},
+        std::tuple{"depthmap", "auto", 15.0}, std::tuple{"depthmap", "3", 12.0}}) {
+    const std::map<std::string, double> stats =
+        frames.render(method, {{"impostor-groups", groups}})->stats();
+    EXPECT_EQ(stats.at("impostor_candidates_per_ray"), expected) << method << " " << groups;
+    EXPECT_GT(stats.at("impostor_pixels"), 1000.0);
+    // Some rays bounce twice, off another sphere's reflective billboard; most leave at once.
+    EXPECT_GT(stats.at("impostor_rays_per_pixel"), 1.0);
+    EXPECT_LT(stats.at("impostor_rays_per_pixel"), 2.0);
+  }
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "core/camera.h"
+#include "core/error.h"
 #include "raytrace/tracer.h"
 #include "scene/builtin_scenes.h"
 #include "scene/environment.h"
@@ -28,8 +29,7 @@ TEST(BuiltinPlaza, IsLargeWithPlanarAndCurvedReflectors) {
 }
 
 // No two objects' bounds overlap but for the floor under them: every object stands on its own.
-TEST(BuiltinPlaza, ObjectsStandApart) {
-  const Scene s = makeBuiltinScene("plaza");
+void expectObjectsApart(const Scene& s) {
   std::vector<Bounds3> bounds;
   std::vector<std::string> names;
   for (int i = 0; i < int(s.instances.size()); ++i)
@@ -47,6 +47,44 @@ TEST(BuiltinPlaza, ObjectsStandApart) {
         ADD_FAILURE() << names[a] << " and " << names[b] << " overlap";
     }
   EXPECT_EQ(overlapping, 0);
+}
+
+TEST(BuiltinPlaza, ObjectsStandApart) {
+  expectObjectsApart(makeBuiltinScene("plaza"));
+}
+
+// The sweeps' scenes: --objects N lays out N objects, --reflectors N keeps N mirrors, all apart
+// and every mirror over the floor.
+TEST(BuiltinPlaza, ObjectsAndReflectorsFollowTheOptions) {
+  for (const auto& [objects, reflectors] :
+       {std::pair{10, 1}, std::pair{10, 32}, std::pair{100, 8}, std::pair{1000, 32}}) {
+    SceneOptions options;
+    options.objects = objects;
+    options.reflectors = reflectors;
+    const Scene s = makeBuiltinScene("plaza", options);
+    EXPECT_EQ(int(s.diffuseInstances().size()), objects + 1);  // and the floor
+    EXPECT_EQ(int(s.reflectorInstances().size()), reflectors);
+    expectObjectsApart(s);
+    const Bounds3 floor = s.instanceBounds(0);
+    for (int r : s.reflectorInstances()) {
+      const vec3 c = s.instanceBounds(r).center();
+      EXPECT_TRUE(c.x >= floor.lo.x && c.x <= floor.hi.x && c.z >= floor.lo.z && c.z <= floor.hi.z)
+          << s.instances[size_t(r)].name;
+    }
+  }
+  const Scene defaults = makeBuiltinScene("plaza");
+  EXPECT_EQ(defaults.diffuseInstances().size(), 241u);
+  EXPECT_EQ(defaults.reflectorInstances().size(), 20u);
+  for (const auto& [objects, reflectors] :
+       {std::pair{9, -1}, std::pair{1001, -1}, std::pair{-1, 0}, std::pair{-1, 33}}) {
+    SceneOptions options;
+    options.objects = objects;
+    options.reflectors = reflectors;
+    EXPECT_THROW(makeBuiltinScene("plaza", options), InputError) << objects << " " << reflectors;
+  }
+  SceneOptions objects;
+  objects.objects = 50;
+  EXPECT_THROW(makeBuiltinScene("spheres9", objects), InputError);
 }
 
 TEST(BuiltinPlaza, MostReflectorsShowInTheMainView) {

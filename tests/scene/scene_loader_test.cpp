@@ -243,7 +243,17 @@ TEST(SceneLoader, ErrorsNameTheSpec) {
     loadScene((dir / "one.json").string(), options);
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("spheres9 only"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("spheres9 and plaza only"), std::string::npos)
+        << e.what();
+  }
+  options = {};
+  options.objects = 50;
+  try {
+    loadScene((dir / "one.json").string(), options);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--objects applies to plaza only"), std::string::npos)
+        << e.what();
   }
 }
 

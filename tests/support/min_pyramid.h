@@ -20,21 +20,28 @@ inline std::vector<float> paddedDepth(const std::vector<float>& depth, ivec2 scr
   return out;
 }
 
-// The level of `size` above `below` (of `below_size`): each cell the minimum of the cells
-// (2x + i, 2y + j), i, j in {0, 1}, that exist below.
-inline std::vector<float> minLevelAbove(const std::vector<float>& below, ivec2 below_size,
-                                        ivec2 size) {
-  std::vector<float> level(size_t(size.x * size.y), 1.0f);
+// The level of `size` above `below` (of `below_size`): each cell `combine` of the cells
+// (2x + i, 2y + j), i, j in {0, 1}, that exist below, starting from `empty`.
+template <typename Combine>
+std::vector<float> levelAbove(const std::vector<float>& below, ivec2 below_size, ivec2 size,
+                              float empty, Combine combine) {
+  std::vector<float> level(size_t(size.x * size.y), empty);
   for (int y = 0; y < size.y; ++y)
     for (int x = 0; x < size.x; ++x) {
-      float m = 1.0f;
+      float m = empty;
       for (int j = 0; j < 2; ++j)
         for (int i = 0; i < 2; ++i)
           if (2 * x + i < below_size.x && 2 * y + j < below_size.y)
-            m = std::min(m, below[size_t((2 * y + j) * below_size.x + 2 * x + i)]);
+            m = combine(m, below[size_t((2 * y + j) * below_size.x + 2 * x + i)]);
       level[size_t(y * size.x + x)] = m;
     }
   return level;
+}
+
+// The nearest depths: the minimum of the cells below (1 where none exists).
+inline std::vector<float> minLevelAbove(const std::vector<float>& below, ivec2 below_size,
+                                        ivec2 size) {
+  return levelAbove(below, below_size, size, 1.0f, [](float a, float b) { return std::min(a, b); });
 }
 
 // The farthest-drawn level 0 of a padded depth buffer: d where d < 1, else 0.
@@ -44,21 +51,10 @@ inline std::vector<float> drawnDepth(const std::vector<float>& padded) {
   return out;
 }
 
-// The farthest-drawn level of `size` above `below`: each cell the maximum of the cells below
-// (those that exist; 0 when none is drawn).
+// The farthest drawn depths: the maximum of the cells below (0 where none is drawn).
 inline std::vector<float> maxLevelAbove(const std::vector<float>& below, ivec2 below_size,
                                         ivec2 size) {
-  std::vector<float> level(size_t(size.x * size.y), 0.0f);
-  for (int y = 0; y < size.y; ++y)
-    for (int x = 0; x < size.x; ++x) {
-      float m = 0.0f;
-      for (int j = 0; j < 2; ++j)
-        for (int i = 0; i < 2; ++i)
-          if (2 * x + i < below_size.x && 2 * y + j < below_size.y)
-            m = std::max(m, below[size_t((2 * y + j) * below_size.x + 2 * x + i)]);
-      level[size_t(y * size.x + x)] = m;
-    }
-  return level;
+  return levelAbove(below, below_size, size, 0.0f, [](float a, float b) { return std::max(a, b); });
 }
 
 }  // namespace mirage::test

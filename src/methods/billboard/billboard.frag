@@ -2,6 +2,7 @@
 // the order-K pixel algorithm of its slides, methods/impostor/impostor_trace.glsl). Cost
 // O(K (D + R)) per pixel; the billboards live in storage buffers, so any number renders.
 #include "render/shaders/reflector.glsl"
+#include "methods/impostor/impostor_counts.glsl"
 
 // Billboards only: no other impostors.
 bool impostor_extra_hit(vec3 origin, vec3 dir, int from, bool reflective, float t_min,

@@ -41,6 +41,7 @@ MethodEntry billboardMethodEntry() {
   entry.info.min_order = 1;
   entry.info.params = billboardStageParams();
   entry.info.counters = {"billboard_captures", "environment_captures"};
+  entry.info.frame_stats = BillboardStage::frameStats();
   entry.create = factoryOf<BillboardMethod>();
   return entry;
 }

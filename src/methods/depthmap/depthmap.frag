@@ -7,6 +7,7 @@
 // maps of itself (--self-maps) are searched by the rays that leave it: a hit there reflects the
 // ray about the map's normal (self-reflection), as a reflective billboard does.
 #include "render/shaders/reflector.glsl"
+#include "methods/impostor/impostor_counts.glsl"
 #include "methods/depthmap/depthmap_shared.h"
 
 layout(std430, binding = MIRAGE_BIND_DEPTHMAPS) readonly buffer DepthMapBlock {
@@ -134,6 +135,7 @@ bool impostor_extra_hit(vec3 origin, vec3 dir, int from, bool reflective, float 
     bool self = reflector >= 0;
     if (self && (reflector != from || !reflective)) continue;
     if (self) {
+      g_impostor_candidates += 1;
       // The ray starts on the object, inside its maps' view: parts of it between a camera and
       // the origin hide what the ray hits from that camera, whichever way it looks. A hit found
       // in any map is a crossing of a surface that map sees, so every map is searched and the
@@ -145,6 +147,7 @@ bool impostor_extra_hit(vec3 origin, vec3 dir, int from, bool reflective, float 
     }
     // An object seen from outside: its maps in order of how nearly each camera looks along the
     // ray, until one is hit (depthmap_maps_shared.h).
+    g_impostor_candidates += 1;
     found = depthmap_object_search(dir, first, count, DEPTHMAP_TRIES) >= 0 || found;
   }
   t_best = g_t_best;

@@ -244,6 +244,7 @@ MethodEntry depthmapMethodEntry() {
   for (const ParamSpec& p : billboardStageParams()) entry.info.params.push_back(p);
   entry.info.counters = {"depthmap_color_captures", "depthmap_depth_captures", "srdm_builds",
                          "billboard_captures", "environment_captures"};
+  entry.info.frame_stats = BillboardStage::frameStats();
   entry.create = factoryOf<DepthMapMethod>();
   return entry;
 }

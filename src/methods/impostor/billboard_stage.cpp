@@ -1,6 +1,7 @@
 #include "methods/impostor/billboard_stage.h"
 
 #include <algorithm>
+#include <array>
 #include <span>
 
 #include "gpu/memory.h"
@@ -79,7 +80,7 @@ std::vector<ParamSpec> billboardStageParams() {
                       "while they fit the driver's texture layers, --impostor-memory and 64 "
                       "groups per reflector, else merges the smallest and most distant",
                       "auto"),
-      ParamSpec::integer("impostor-memory", 16, 1 << 20, 1024,
+      ParamSpec::integer("impostor-memory", 16, 1 << 20, 2048,
                          "impostor textures auto grouping keeps within, in MiB")};
   for (ParamSpec& spec : billboardRecaptureParams()) params.push_back(std::move(spec));
   return params;
@@ -110,6 +111,9 @@ void drawReflectorsOnce(const FrameContext& frame, const gpu::Program& depth_pro
   frame.drawOwnReflectors(program);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
+  // The counts are the fragment shader's atomics: glGetNamedBufferSubData sees them only
+  // behind this barrier (as ssr's).
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
 BillboardStage::BillboardStage(const BillboardStageOptions& options, const Scene& scene)
@@ -174,14 +178,28 @@ bool BillboardStage::beginFrame(FrameContext& frame, const gpu::Program& program
   }
   bind(program, frame.gpu);
   program.set("u_last_bounce_reflective", last_bounce_reflective ? 1 : 0);
+  const std::array<GLuint, MIRAGE_IMPOSTOR_COUNTS> zeros{};
+  counts_.upload(std::span<const GLuint>(zeros));
+  counts_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_IMPOSTOR_COUNTS);
+  counted_ = true;
   return true;
+}
+
+std::vector<std::string> BillboardStage::frameStats() {
+  return {"impostor_candidates_per_ray", "impostor_rays_per_pixel"};
 }
 
 std::map<std::string, double> BillboardStage::stats() const {
   int diffuse = 0, reflective = 0;
   for (const BillboardSpec& b : set_.billboards)
     (b.kind == BillboardSpec::Kind::kReflective ? reflective : diffuse)++;
-  return {{"billboard_captures", double(capture_.captures())},
+  std::array<GLuint, MIRAGE_IMPOSTOR_COUNTS> c{};
+  if (counted_) counts_.download(c.data(), sizeof(c));
+  const double rays = double(c[MIRAGE_IMPOSTOR_RAYS]), pixels = double(c[MIRAGE_IMPOSTOR_PIXELS]);
+  return {{"impostor_candidates_per_ray",
+           rays > 0.0 ? double(c[MIRAGE_IMPOSTOR_CANDIDATES]) / rays : 0.0},
+          {"impostor_rays_per_pixel", pixels > 0.0 ? rays / pixels : 0.0},
+          {"impostor_pixels", pixels},{"billboard_captures", double(capture_.captures())},
           {"billboard_captures_last_update", double(last_captures_)},
           {"diffuse_billboards", double(diffuse)},
           {"reflective_billboards", double(reflective)},

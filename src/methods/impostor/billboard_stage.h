@@ -27,7 +27,7 @@ struct BillboardStageOptions {
   int envmap_size = 256;             // face size of the captured environment
   RecapturePolicy recapture;         // moving scenes: when billboards are re-captured
   GroupSetting groups;               // --impostor-groups
-  uint64_t memory_cap = 1ull << 30;  // --impostor-memory, bytes
+  uint64_t memory_cap = 2ull << 30;  // --impostor-memory, bytes
 };
 
 // The parameters every impostor method takes for its billboards, and the options they make.
@@ -40,7 +40,8 @@ bool lastBounceReflective(const ParamValues& params);
 
 // Draws the reflectors' depth with `depth_program` (colour writes off), then `program` once per
 // visible reflector pixel (depth test LEQUAL, no depth writes): the expensive shader runs once
-// per pixel, with no overdraw. Only the frame's own reflectors (FrameContext::own).
+// per pixel, with no overdraw. Only the frame's own reflectors (FrameContext::own). Ends with
+// the barrier that lets the stage read the trace's counts back (stats()).
 void drawReflectorsOnce(const FrameContext& frame, const gpu::Program& depth_program,
                         const gpu::Program& program);
 
@@ -62,6 +63,9 @@ class BillboardStage {
   bool beginFrame(FrameContext& frame, const gpu::Program& program,
                   const gpu::Program& base_program, bool last_bounce_reflective) const;
   bool empty() const { return set_.ranges.empty(); }
+  // The stats every impostor method's frame reports (MethodInfo::frame_stats): the impostors a
+  // reflected ray tested on average and the rays a reflector pixel traced, in the last frame.
+  static std::vector<std::string> frameStats();
   const BillboardSet& set() const { return set_; }
   std::map<std::string, double> stats() const;
 
@@ -73,6 +77,9 @@ class BillboardStage {
   BillboardCapture capture_;
   BillboardSet set_;
   gpu::Buffer billboards_, ranges_, entries_;
+  // The trace's counts (impostor_counts.glsl), zeroed at each frame's start.
+  mutable gpu::Buffer counts_;
+  mutable bool counted_ = false;
   gpu::Texture environment_;
   std::unique_ptr<CubeCapture> cube_;
   bool env_valid_ = false;

@@ -60,7 +60,7 @@ struct GroupCost {
 // The caps `auto` keeps within.
 struct GroupCaps {
   int64_t max_layers = 2048;        // the driver's GL_MAX_ARRAY_TEXTURE_LAYERS
-  uint64_t max_bytes = 1ull << 30;  // --impostor-memory
+  uint64_t max_bytes = 2ull << 30;  // --impostor-memory
   int max_groups = kAutoGroupsPerReflector;
 };
 

@@ -6,7 +6,8 @@
 // about its texel's normal from its texel's surface point (or, with no bounce left, gives that
 // reflector's base colour), and a miss gives the environment (without the impostored objects).
 //
-// The includer defines, before including this file, the other impostors' hooks:
+// The includer includes impostor_counts.glsl (the work counted) and defines, before including
+// this file, the other impostors' hooks:
 //   // The nearest hit of its impostors along the ray with t_min < t < t_best, for rays leaving
 //   // reflector `from` (0-based): lowers t_best, sets `end` (what the path's end looks up) and
 //   // returns true; false leaves both. dox..ddy: the ray differential, for the footprint.
@@ -99,8 +100,10 @@ BounceHit nearest_bounce_hit(vec3 origin, vec3 dir, int from, bool reflective, f
   h.uv = vec2(0.0f);
   // The reflector's list holds its diffuse billboards, then the reflective ones right after
   // (range.z == range.x + range.y): one loop tests both.
-  h.hit = nearest_billboard(origin, dir, range.x, range.y + (reflective ? range.w : 0), t_min,
-                            h.t, h.uv);
+  int tested = range.y + (reflective ? range.w : 0);
+  g_impostor_candidates += tested;
+  g_impostor_rays += 1;
+  h.hit = nearest_billboard(origin, dir, range.x, tested, t_min, h.t, h.uv);
   h.extra_end = vec4(0.0f);
   h.extra = impostor_extra_hit(origin, dir, from, reflective, t_min, h.t, dox, doy, ddx, ddy,
                                h.extra_end);
@@ -258,5 +261,6 @@ vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflecto
     end.env_dir = dir;
     from = leaves;
   }
+  impostor_count_pixel();
   return vec4(sum + throughput * path_end_radiance(end, ddx, ddy), first_distance);
 }
