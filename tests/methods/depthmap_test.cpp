@@ -108,6 +108,23 @@ TEST(DepthMapGeometry, ClipKeepsExactlyThePartInsideTheFrustum) {
   EXPECT_GT(clipped, 200);
 }
 
+TEST(DepthMapGeometry, SphereTestAcceptsExactlyTheRaysThatMeetItInRange) {
+  namespace sh = shading;
+  const vec4 sphere(1.0f, 2.0f, 3.0f, 0.5f);
+  const vec3 origin(1.0f, 2.0f, 0.0f), at(0.0f, 0.0f, 1.0f);  // straight at the centre: t 2.5..3.5
+  EXPECT_TRUE(sh::depthmap_sphere_overlaps(origin, at, sphere, 0.0f, 100.0f));
+  EXPECT_TRUE(sh::depthmap_sphere_overlaps(origin, at, sphere, 3.4f, 100.0f));
+  EXPECT_FALSE(sh::depthmap_sphere_overlaps(origin, at, sphere, 3.6f, 100.0f));  // past it
+  EXPECT_TRUE(sh::depthmap_sphere_overlaps(origin, at, sphere, 0.0f, 2.6f));
+  EXPECT_FALSE(sh::depthmap_sphere_overlaps(origin, at, sphere, 0.0f, 2.4f));     // a nearer hit
+  EXPECT_FALSE(sh::depthmap_sphere_overlaps(origin, -at, sphere, 0.0f, 100.0f));  // behind
+  // Passing 0.49 from the centre meets it; 0.51 does not. A direction of any length.
+  EXPECT_TRUE(sh::depthmap_sphere_overlaps(origin + vec3(0.49f, 0, 0), 3.0f * at, sphere, 0, 100));
+  EXPECT_FALSE(sh::depthmap_sphere_overlaps(origin + vec3(0.51f, 0, 0), at, sphere, 0, 100));
+  // From inside: always.
+  EXPECT_TRUE(sh::depthmap_sphere_overlaps(vec3(sphere), vec3(0, 1, 0), sphere, 0.0f, 0.1f));
+}
+
 TEST(DepthMapGeometry, ProjectedFractionMapsBackToTheRay) {
   const View view = depthCamera(vec3(0.0f), 1.0f, vec3(0.0f, 0.0f, 1.0f), 30.0f, 64);
   const mat4 vp = view.viewProjection();

@@ -146,8 +146,10 @@ bool impostor_extra_hit(vec3 origin, vec3 dir, int from, bool reflective, float 
       continue;
     }
     // An object seen from outside: its maps in order of how nearly each camera looks along the
-    // ray, until one is hit (depthmap_maps_shared.h).
+    // ray, until one is hit (depthmap_maps_shared.h); not at all when the ray passes its sphere
+    // by, or meets it only beyond the nearest hit so far.
     g_impostor_candidates += 1;
+    if (!depthmap_sphere_overlaps(origin, dir, depthmaps[first].bound, t_min, g_t_best)) continue;
     found = depthmap_object_search(dir, first, count, DEPTHMAP_TRIES) >= 0 || found;
   }
   t_best = g_t_best;

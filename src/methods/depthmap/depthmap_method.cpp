@@ -122,6 +122,7 @@ class DepthMapMethod final : public Method {
       if (s.index == 0)
         for (size_t k = i; k < specs_.size() && specs_[k].instance == s.instance; ++k) ++count;
       d.info = ivec4(int(i), int(i) * srdm_.domains, s.instance, count);
+      d.bound = depthMapSphere(s, gpu.instanceMatrix(s.instance));
       data.push_back(d);
     }
     if (data.empty()) data.push_back(shading::DepthMapData{});

@@ -117,14 +117,20 @@ std::vector<int> depthMappedInstances(const std::vector<DepthMapSpec>& specs) {
   return out;
 }
 
-View depthMapView(const DepthMapSpec& spec, const mat4& model, const DepthMapOptions& options) {
+vec4 depthMapSphere(const DepthMapSpec& spec, const mat4& model) {
   const mat3 linear(model);
   // A rigid motion with uniform scale keeps the sphere a sphere; the largest axis scale bounds it
   // otherwise.
   const float scale =
       std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2]), 1e-12f});
-  const float radius = 1.01f * spec.radius * scale;
-  const vec3 centre = transformPoint(model, spec.centre);
+  return vec4(transformPoint(model, spec.centre), 1.01f * spec.radius * scale);
+}
+
+View depthMapView(const DepthMapSpec& spec, const mat4& model, const DepthMapOptions& options) {
+  const mat3 linear(model);
+  const vec4 sphere = depthMapSphere(spec, model);
+  const float radius = sphere.w;
+  const vec3 centre = vec3(sphere);
   const vec3 from = glm::normalize(linear * spec.from);
   const float distance = radius / std::sin(glm::radians(options.fov_degrees) * 0.5f);
   CameraDesc c;

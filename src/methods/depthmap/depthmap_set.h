@@ -52,6 +52,10 @@ std::vector<DepthMapSpec> placeDepthMaps(const Scene& scene, const DepthMapOptio
 // The diffuse instances that have depth maps (and so no billboards), once each, members too.
 std::vector<int> depthMappedInstances(const std::vector<DepthMapSpec>& specs);
 
+// The sphere `spec`'s camera frames, with its object placed by `model`: xyz its world centre, w
+// its radius (everything the map holds lies inside).
+vec4 depthMapSphere(const DepthMapSpec& spec, const mat4& model);
+
 // The camera of `spec` with its object placed by `model`: near and far planes enclose the
 // bounding sphere.
 View depthMapView(const DepthMapSpec& spec, const mat4& model, const DepthMapOptions& options);

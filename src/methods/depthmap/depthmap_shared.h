@@ -31,7 +31,22 @@ struct DepthMapData {
                    // world size of a texel per unit of eye depth
   ivec4 info;      // x: layer (colour, depth); y: first SRDM layer (domain 0); z: instance;
                    // w: on an object's first map, its map count (else 0)
+  vec4 bound;      // xyz: the centre of the sphere the map frames (world); w: its radius: all
+                   // the map holds lies inside it
 };
+
+// Whether the ray origin + t dir meets the sphere (centre, radius) at some t in [t0, t1]: a ray
+// that does not cannot hit anything a map framing the sphere holds, and skips its search.
+SHARED_FN bool depthmap_sphere_overlaps(vec3 origin, vec3 dir, vec4 sphere, float t0, float t1) {
+  vec3 oc = origin - vec3(sphere.x, sphere.y, sphere.z);
+  float a = dot(dir, dir);
+  float b = dot(oc, dir);
+  float c = dot(oc, oc) - sphere.w * sphere.w;
+  float disc = b * b - a * c;
+  if (disc < 0.0f || a <= 0.0f) return false;
+  float root = sqrt(disc);
+  return (-b + root) / a >= t0 && (-b - root) / a <= t1;
+}
 
 // Clips the ray origin + t dir, t in [t0, t1], to the clip volume -w <= x, y, z <= w of
 // view_proj (Liang-Barsky on homogeneous coordinates: every plane is linear in t). Returns false
@@ -75,7 +90,7 @@ SHARED_FN float depthmap_unproject_fraction(float lambda, float w0, float w1) {
 SHARED_END
 
 #ifndef MIRAGE_GLSL
-static_assert(sizeof(mirage::shading::DepthMapData) == 6 * 16, "DepthMapData layout");
+static_assert(sizeof(mirage::shading::DepthMapData) == 7 * 16, "DepthMapData layout");
 #endif
 
 #endif  // MIRAGE_METHODS_DEPTHMAP_DEPTHMAP_SHARED_H
