@@ -4,6 +4,8 @@
 #include "core/choices.h"
 #include "core/error.h"
 
+#include <utility>
+
 namespace mirage::gpu {
 
 const char* partName(Part part) {
@@ -27,8 +29,13 @@ void FrameTimer::mark(int part) {
     m.wall_ms = stopwatch_.ms();
   } else {
     GLuint id = 0;
-    glGenQueries(1, &id);
-    queries_.emplace_back(id);
+    if (!free_.empty()) {
+      id = free_.back();
+      free_.pop_back();
+    } else {
+      glGenQueries(1, &id);
+      queries_.emplace_back(id);
+    }
     glQueryCounter(id, GL_TIMESTAMP);
     m.query = id;
   }
@@ -37,6 +44,7 @@ void FrameTimer::mark(int part) {
 
 void FrameTimer::beginFrame() {
   MIRAGE_CHECK(current_.marks.empty());  // beginFrame inside a frame
+  if (clock_ == Clock::kGpu) harvest(false);
   mark(-1);
 }
 
@@ -58,33 +66,49 @@ void FrameTimer::shift(Part from, Part to, double ms) {
   current_.shift_ms[size_t(to)] += ms;
 }
 
-std::vector<FrameTimes> FrameTimer::takeResults() {
-  std::vector<FrameTimes> results;
-  for (auto& frame : pending_) {
-    const std::vector<Mark>& marks = frame.marks;
-    std::vector<double> t(marks.size());
-    for (size_t i = 0; i < marks.size(); ++i) {
-      if (clock_ == Clock::kWall) {
-        t[i] = marks[i].wall_ms;
-      } else {
-        GLuint64 ns = 0;
-        glGetQueryObjectui64v(marks[i].query, GL_QUERY_RESULT, &ns);
-        t[i] = double(ns) * 1e-6;
-      }
+FrameTimes FrameTimer::resolve(const Frame& frame) const {
+  const std::vector<Mark>& marks = frame.marks;
+  std::vector<double> t(marks.size());
+  for (size_t i = 0; i < marks.size(); ++i) {
+    if (clock_ == Clock::kWall) {
+      t[i] = marks[i].wall_ms;
+    } else {
+      GLuint64 ns = 0;
+      glGetQueryObjectui64v(marks[i].query, GL_QUERY_RESULT, &ns);
+      t[i] = double(ns) * 1e-6;
     }
-    FrameTimes ft;
-    ft.total_ms = t.back() - t.front();
-    // Each interval belongs to the part whose mark opened it.
-    for (size_t i = 1; i < marks.size(); ++i) {
-      int part = marks[i - 1].part;
-      if (part >= 0 && part < kPartCount) ft.part_ms[size_t(part)] += t[i] - t[i - 1];
-    }
-    for (int p = 0; p < kPartCount; ++p) ft.part_ms[size_t(p)] += frame.shift_ms[size_t(p)];
-    results.push_back(ft);
   }
-  pending_.clear();
-  queries_.clear();
-  return results;
+  FrameTimes ft;
+  ft.total_ms = t.back() - t.front();
+  // Each interval belongs to the part whose mark opened it.
+  for (size_t i = 1; i < marks.size(); ++i) {
+    int part = marks[i - 1].part;
+    if (part >= 0 && part < kPartCount) ft.part_ms[size_t(part)] += t[i] - t[i - 1];
+  }
+  for (int p = 0; p < kPartCount; ++p) ft.part_ms[size_t(p)] += frame.shift_ms[size_t(p)];
+  return ft;
+}
+
+void FrameTimer::harvest(bool wait) {
+  size_t resolved = 0;
+  for (; resolved < pending_.size(); ++resolved) {
+    const Frame& frame = pending_[resolved];
+    if (!wait && clock_ == Clock::kGpu) {
+      // The GPU answers a frame's queries in order: its last mark is its last answer.
+      GLuint available = GL_FALSE;
+      glGetQueryObjectuiv(frame.marks.back().query, GL_QUERY_RESULT_AVAILABLE, &available);
+      if (available != GL_TRUE) break;
+    }
+    done_.push_back(resolve(frame));
+    if (clock_ == Clock::kGpu)
+      for (const Mark& m : frame.marks) free_.push_back(m.query);
+  }
+  pending_.erase(pending_.begin(), pending_.begin() + std::ptrdiff_t(resolved));
+}
+
+std::vector<FrameTimes> FrameTimer::takeResults() {
+  harvest(true);
+  return std::exchange(done_, {});
 }
 
 }  // namespace mirage::gpu

@@ -2,8 +2,9 @@
 // reflections; reflect: the reflections). Two clocks (docs/architecture.md, "Timing"):
 //  - wall: glFinish() at each part boundary and the steady clock. Required on llvmpipe, whose
 //    timer queries measure command submission, not rasterisation;
-//  - gpu: GL_TIMESTAMP queries at each boundary, no stalls, read back when results are asked for
-//    (several frames later), for real GPUs.
+//  - gpu: GL_TIMESTAMP queries at each boundary, no stalls, for real GPUs: a frame's queries
+//    are read once the GPU has answered them (looked at as each frame begins, never waited for)
+//    and then used again, so that a long run holds the queries of the frames in flight only.
 #pragma once
 
 #include <array>
@@ -59,9 +60,16 @@ class FrameTimer {
     std::vector<Mark> marks;
     std::array<double, kPartCount> shift_ms{};
   };
+  // The frame's times from its marks (the GPU's answers must be in).
+  FrameTimes resolve(const Frame& frame) const;
+  // Resolves the pending frames whose queries the GPU has answered, oldest first; all of them
+  // (waiting) with `wait`. Their queries go back to the free list.
+  void harvest(bool wait);
   Frame current_;
-  std::vector<Frame> pending_;
-  std::vector<Handle<QueryTraits>> queries_;
+  std::vector<Frame> pending_;                // ended, not resolved yet (GPU clock)
+  std::vector<FrameTimes> done_;              // resolved, not taken yet
+  std::vector<Handle<QueryTraits>> queries_;  // every query made, owned
+  std::vector<GLuint> free_;                  // those no frame uses now
 };
 
 }  // namespace mirage::gpu
