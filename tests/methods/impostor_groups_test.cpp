@@ -162,6 +162,19 @@ TEST(ImpostorGroups, AutoMergesWhatTheDriverCannotHoldAndPerObjectSaysWhatWould)
               std::string::npos)
         << e.what();
   }
+  // auto with more moving objects than fit: refused, saying why.
+  Scene moving = mirrorAmongObjects(48);
+  for (int i : depthMappedObjects(moving)) {
+    Instance& inst = moving.instances[size_t(i)];
+    inst.animation.keys = {Keyframe{0.0f, inst.transform}, Keyframe{1.0f, inst.transform}};
+  }
+  try {
+    chooseGroups(moving, objects, {}, srdmCost(), GroupCaps{}, "depth maps", "");
+    ADD_FAILURE() << "48 moving objects were accepted";
+  } catch (const GpuError& e) {
+    EXPECT_NE(std::string(e.what()).find("moving objects are never merged"), std::string::npos)
+        << e.what();
+  }
   // Not even one group: the message names what would fit.
   GroupCost huge = srdmCost();
   huge.fixed_layers = 2000;

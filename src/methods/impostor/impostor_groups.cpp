@@ -192,6 +192,12 @@ Grouping chooseGroups(const Scene& scene, const std::vector<int>& objects,
   const int count = int(g.groups.size());
   g.layers = cost.layers(count);
   g.bytes = cost.bytes(count);
+  // auto makes more groups than fit only when more objects move than fit (they stay apart).
+  if (g.layers > caps.max_layers && setting.mode == GroupSetting::Mode::kAuto)
+    throwGpu(
+        "{}: {} groups of {} objects (moving objects are never merged) need {} texture layers, "
+        "beyond the driver's GL_MAX_ARRAY_TEXTURE_LAYERS ({}); at most {} groups fit",
+        method, count, g.objects, g.layers, caps.max_layers, g.fit);
   if (g.layers > caps.max_layers)
     throwGpu(
         "{}: --impostor-groups {} makes {} groups of {} objects, needing {} texture layers, beyond "
