@@ -79,19 +79,13 @@ Grouping depthMapGroups(const MethodSetup& setup, const DepthMapOptions& options
                       "a smaller --srdm-n or --self-maps");
 }
 
-std::vector<std::vector<int>> memberLists(const Grouping& grouping) {
-  std::vector<std::vector<int>> lists;
-  for (const ImpostorGroup& g : grouping.groups) lists.push_back(g.members);
-  return lists;
-}
-
 class DepthMapMethod final : public Method {
  public:
   explicit DepthMapMethod(const MethodSetup& setup)
       : options_(depthMapOptions(setup.params)),
         srdm_(srdmSettings(setup.params)),
         grouping_(depthMapGroups(setup, options_, srdm_)),
-        specs_(placeDepthMaps(setup.gpu.scene(), options_, memberLists(grouping_))),
+        specs_(placeDepthMaps(setup.gpu.scene(), options_, grouping_.memberLists())),
         stage_(stageOptions(setup.params, specs_), setup.gpu.scene()),
         capture_(options_, srdm_, setup.params.choice<SrdmBuilder>("srdm-builder", kSrdmBuilders)),
         recapture_(billboardRecapture(setup.params)),

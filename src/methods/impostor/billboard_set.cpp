@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace mirage {
 
@@ -168,37 +169,33 @@ void addReflectorList(BillboardSet& set, int r, const Scene& scene,
 
 }  // namespace
 
-std::vector<int> billboardedObjects(const Scene& scene, const BillboardSetOptions& options) {
-  std::vector<int> objects;
-  if (!options.objects) return objects;
-  for (int i = 0; i < int(scene.instances.size()); ++i)
-    if (!scene.isReflector(i) &&
-        std::find(options.excluded.begin(), options.excluded.end(), i) == options.excluded.end() &&
-        !isPlanarInstance(scene, i, scene.instances[size_t(i)].matrixAt(0.0f)))
-      objects.push_back(i);
-  return objects;
+BillboardedInstances billboardedInstances(const Scene& scene, const BillboardSetOptions& options,
+                                          float time) {
+  BillboardedInstances out;
+  for (int i = 0; i < int(scene.instances.size()); ++i) {
+    if (scene.isReflector(i)) continue;
+    if (std::find(options.excluded.begin(), options.excluded.end(), i) != options.excluded.end())
+      continue;
+    if (isPlanarInstance(scene, i, scene.instances[size_t(i)].matrixAt(time)))
+      out.planar.push_back(i);
+    else
+      (options.objects ? out.objects : out.unbillboarded).push_back(i);
+  }
+  return out;
 }
 
 BillboardSet placeBillboards(const Scene& scene, float time, const BillboardSetOptions& options) {
   BillboardSet set;
   const ReflectorSpheres reflectors = reflectorSpheres(scene, time);
   set.environment_centre = reflectors.centroid;
-  std::vector<int> planar;
+  BillboardedInstances instances = billboardedInstances(scene, options, time);
+  set.unbillboarded = std::move(instances.unbillboarded);
   std::vector<std::vector<int>> groups;
-  for (int i = 0; i < int(scene.instances.size()); ++i) {
-    if (scene.isReflector(i)) continue;
-    if (std::find(options.excluded.begin(), options.excluded.end(), i) != options.excluded.end())
-      continue;
-    if (isPlanarInstance(scene, i, scene.instances[size_t(i)].matrixAt(time)))
-      planar.push_back(i);
-    else if (!options.objects)
-      set.unbillboarded.push_back(i);
-    else if (options.groups.empty())
-      groups.push_back({i});
-  }
-  if (options.objects && !options.groups.empty()) groups = options.groups;
+  if (options.objects) groups = options.groups;
+  if (groups.empty())
+    for (int i : instances.objects) groups.push_back({i});
   const std::vector<int> planar_index =
-      addPlanarBillboards(set, scene, planar, time, options, reflectors);
+      addPlanarBillboards(set, scene, instances.planar, time, options, reflectors);
   set.ranges.resize(reflectors.instances.size());
   for (int r = 0; r < int(reflectors.instances.size()); ++r)
     addReflectorList(set, r, scene, planar_index, groups, time, options.fov_degrees, reflectors);

@@ -72,8 +72,15 @@ struct BillboardSet {
   std::vector<shading::BillboardData> gpuData(const Scene& scene) const;
 };
 
-// The non-planar diffuse objects that get billboards of their own (or of their group's).
-std::vector<int> billboardedObjects(const Scene& scene, const BillboardSetOptions& options);
+// The diffuse instances a billboard set stands for at `time` (reflectors and `excluded` left
+// out): the planar ones (each its own billboard), the others that get billboards of their own or
+// of their group's, and the others that go into the captured environment instead
+// (--billboard-objects planar).
+struct BillboardedInstances {
+  std::vector<int> planar, objects, unbillboarded;
+};
+BillboardedInstances billboardedInstances(const Scene& scene, const BillboardSetOptions& options,
+                                          float time);
 
 // The billboards of `scene` with its instances placed at `time`.
 BillboardSet placeBillboards(const Scene& scene, float time, const BillboardSetOptions& options);

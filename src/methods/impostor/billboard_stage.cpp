@@ -21,15 +21,9 @@ constexpr Choice<bool> kLastBounceReflective[] = {{"all", true}, {"diffuse", fal
 // What the billboards cost per group and besides: one surface layer per group and reflector;
 // the planar objects' layers and the reflective billboards' (a surface and a surface-point
 // layer for each ordered pair of reflectors) are fixed.
-GroupCost billboardCost(const Scene& scene, const BillboardStageOptions& options, int objects) {
+GroupCost billboardCost(const Scene& scene, const BillboardStageOptions& options, int planar,
+                        int objects) {
   const int64_t reflectors = int64_t(scene.reflectorInstances().size());
-  int64_t planar = 0;
-  for (int i = 0; i < int(scene.instances.size()); ++i)
-    if (!scene.isReflector(i) &&
-        isPlanarInstance(scene, i, scene.instances[size_t(i)].matrixAt(0.0f)) &&
-        std::find(options.set.excluded.begin(), options.set.excluded.end(), i) ==
-            options.set.excluded.end())
-      ++planar;
   const int size = options.billboard_size;
   const uint64_t surface =
       gpu::storageBytes(GL_RGBA16F, size, size, 1, gpu::Texture::fullMipLevels(size));
@@ -118,13 +112,13 @@ void drawReflectorsOnce(const FrameContext& frame, const gpu::Program& depth_pro
 
 BillboardStage::BillboardStage(const BillboardStageOptions& options, const Scene& scene)
     : options_(options), capture_(options.billboard_size) {
-  const std::vector<int> objects = billboardedObjects(scene, options_.set);
-  grouping_ =
-      chooseGroups(scene, objects, options_.groups,
-                   billboardCost(scene, options_, int(objects.size())), impostorGroupCaps(options_),
-                   "billboards", "a smaller --billboard-size, or fewer reflectors (--reflectors)");
-  options_.set.groups.clear();
-  for (const ImpostorGroup& g : grouping_.groups) options_.set.groups.push_back(g.members);
+  const BillboardedInstances instances = billboardedInstances(scene, options_.set, 0.0f);
+  grouping_ = chooseGroups(
+      scene, instances.objects, options_.groups,
+      billboardCost(scene, options_, int(instances.planar.size()), int(instances.objects.size())),
+      impostorGroupCaps(options_), "billboards",
+      "a smaller --billboard-size, or fewer reflectors (--reflectors)");
+  options_.set.groups = grouping_.memberLists();
 }
 
 void BillboardStage::update(FrameContext& frame) {
@@ -199,7 +193,8 @@ std::map<std::string, double> BillboardStage::stats() const {
   return {{"impostor_candidates_per_ray",
            rays > 0.0 ? double(c[MIRAGE_IMPOSTOR_CANDIDATES]) / rays : 0.0},
           {"impostor_rays_per_pixel", pixels > 0.0 ? rays / pixels : 0.0},
-          {"impostor_pixels", pixels},{"billboard_captures", double(capture_.captures())},
+          {"impostor_pixels", pixels},
+          {"billboard_captures", double(capture_.captures())},
           {"billboard_captures_last_update", double(last_captures_)},
           {"diffuse_billboards", double(diffuse)},
           {"reflective_billboards", double(reflective)},

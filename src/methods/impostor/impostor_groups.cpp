@@ -208,6 +208,12 @@ Grouping chooseGroups(const Scene& scene, const std::vector<int>& objects,
   return g;
 }
 
+std::vector<std::vector<int>> Grouping::memberLists() const {
+  std::vector<std::vector<int>> lists;
+  for (const ImpostorGroup& g : groups) lists.push_back(g.members);
+  return lists;
+}
+
 int64_t driverArrayLayers() {
   GLint layers = 0;
   glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &layers);

@@ -76,6 +76,9 @@ struct Grouping {
       limit;  // the cap that bounds `fit` ("texture layers", "memory", "groups per reflector")
   int64_t layers = 0;
   uint64_t bytes = 0;
+
+  // Each group's members, as BillboardSetOptions::groups and placeDepthMaps take them.
+  std::vector<std::vector<int>> memberLists() const;
 };
 
 // Groups `objects` for `method` by `setting`: per-object keeps one group an object, N asks for N
