@@ -24,11 +24,12 @@ TEST_F(FrameTimerGpu, ALongRunReusesItsQueries) {
     timer.beginPart(gpu::Part::kReflect);
     glClear(GL_COLOR_BUFFER_BIT);
     timer.endFrame();
-    glFlush();  // as a frame loop's swap does: the GPU gets the frame
+    // The GPU done with the frame: its queries are answered by the next frame's start (how many
+    // frames stay in flight otherwise depends on the driver and the machine's load).
+    glFinish();
   }
-  // Four queries a frame, for the frames the GPU has not answered yet (llvmpipe: 16 in flight);
-  // without reuse, 1,200.
-  EXPECT_LE(gpu::liveHandles().queries - before, 4 * 32);
+  // Four queries a frame, for the frame being answered and the next; without reuse, 1,200.
+  EXPECT_LE(gpu::liveHandles().queries - before, 4 * 2);
   const std::vector<gpu::FrameTimes> times = timer.takeResults();
   ASSERT_EQ(times.size(), size_t(kFrames));
   for (const gpu::FrameTimes& t : times) {
