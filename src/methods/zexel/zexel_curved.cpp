@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "methods/recapture_params.h"
+#include "methods/zexel/zexel_shared.h"
 #include "render/base_colour.h"
 
 namespace mirage {
@@ -24,7 +25,11 @@ std::vector<ParamSpec> ZexelCurvedReflectors::params() {
                          "in texels"),
       ParamSpec::real("zexel-curved-step", 0.25, 16.0, 1.0,
                       "the inverse warp's step along the reflected ray's epipolar line in "
-                      "the cube map, in texels")};
+                      "the cube map, in texels"),
+      ParamSpec::choice("zexel-curved-bounds", {"on", "off"}, "on",
+                        "the inverse warp crosses stretches where the ray stays in front of the "
+                        "map in one read of a pyramid of lower bounds of its distances (off: "
+                        "every step read; the same hits)")};
   for (ParamSpec& spec : probeRecaptureParams()) params.push_back(std::move(spec));
   return params;
 }
@@ -32,7 +37,8 @@ std::vector<ParamSpec> ZexelCurvedReflectors::params() {
 ZexelCurvedReflectors::ZexelCurvedReflectors(const MethodSetup& setup)
     : inverse_(setup.params.choice<bool>("zexel-curved", kInverseWarp)),
       size_(setup.params.integer("zexel-cube-size")),
-      search_(zexelInverseSettings(size_, float(setup.params.real("zexel-curved-step")))),
+      search_(zexelInverseSettings(size_, float(setup.params.real("zexel-curved-step")),
+                                   setup.params.on("zexel-curved-bounds"))),
       cubes_(size_, GL_RGBA32F),
       recapture_(probeRecapture(setup.params)),
       program_(
@@ -46,6 +52,7 @@ ZexelCurvedReflectors::ZexelCurvedReflectors(const MethodSetup& setup)
   program_.set("u_step_angle", search_.step_angle);
   program_.set("u_max_steps", search_.max_steps);
   program_.set("u_max_slope", search_.max_slope);
+  program_.set("u_texel_angle", search_.texel_angle);
 }
 
 void ZexelCurvedReflectors::update(FrameContext& frame) {
@@ -54,12 +61,16 @@ void ZexelCurvedReflectors::update(FrameContext& frame) {
   const std::vector<int> reflectors = frame.gpu.scene().reflectorInstances();
   const float radius = std::max(frame.gpu.scene().bounds(frame.gpu.time()).radius(), 1e-3f);
   // The frame's alpha is the distance from the view's eye: from the centre here.
-  cubes_.updateAtReflectors(frame.gpu, frame.settings.mip, curved_, diffuse_, reflectors,
-                            recapture_, radius, [&](int r, const View& v) {
-                              frame.passes.begin(v, frame.settings);
-                              frame.passes.drawDirect();
-                              frame.passes.drawReflectors(base_program_, curved_[size_t(r)]);
-                            });
+  const int captured =
+      cubes_.updateAtReflectors(frame.gpu, frame.settings.mip, curved_, diffuse_, reflectors,
+                                recapture_, radius, [&](int r, const View& v) {
+                                  frame.passes.begin(v, frame.settings);
+                                  frame.passes.drawDirect();
+                                  frame.passes.drawReflectors(base_program_, curved_[size_t(r)]);
+                                });
+  // Every cube's pyramid again, however few were captured: one pass over the cubes, a small
+  // part of one capture.
+  if (captured > 0) distances_.build(cubes_.texture());
   // A map not captured again this frame is searched from where it was captured.
   centres_.clear();
   for (int instance : curved_)
@@ -70,6 +81,8 @@ void ZexelCurvedReflectors::update(FrameContext& frame) {
 void ZexelCurvedReflectors::draw(FrameContext& frame) const {
   if (!inverse_ || frame.settings.order == 0 || centres_.empty()) return;
   cubes_.bind(MIRAGE_UNIT_METHOD);
+  distances_.bind();
+  program_.set("u_top_level", std::min(search_.top_level, distances_.topLevel()));
   program_.use();
   for (size_t r = 0; r < curved_.size(); ++r) {
     if (!frame.owns(curved_[r])) continue;
@@ -77,10 +90,16 @@ void ZexelCurvedReflectors::draw(FrameContext& frame) const {
     program_.set("u_centre", centres_[r]);
     frame.gpu.draw(curved_[r]);
   }
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // the counts, read back by the stats
 }
 
-void ZexelCurvedReflectors::addStats(std::map<std::string, double>& stats) const {
+void ZexelCurvedReflectors::addStats(std::map<std::string, double>& stats,
+                                     const uint32_t* counters) const {
   stats["zexel_curved_reflectors"] = inverse_ ? double(curved_.size()) : 0.0;
+  const double rays = double(counters[MIRAGE_ZEXEL_COUNT_CURVED_RAYS]);
+  stats["zexel_curved_pixels"] = rays;
+  stats["zexel_curved_reads_per_ray"] =
+      rays > 0.0 ? double(counters[MIRAGE_ZEXEL_COUNT_CURVED_READS]) / rays : 0.0;
   stats["zexel_cube_captures"] = double(cubes_.captures());
   stats["zexel_cubes_pending"] = double(cubes_.pending());
 }

@@ -15,14 +15,15 @@
 
 #include "methods/method.h"
 #include "methods/zexel/zexel_cube_map.h"
+#include "methods/zexel/zexel_distance_pyramid.h"
 #include "render/probe_array.h"
 
 namespace mirage {
 
 class ZexelCurvedReflectors {
  public:
-  // The parameters it reads (`zexel-curved`, `zexel-cube-size`, `zexel-curved-step`), for the
-  // method's entry.
+  // The parameters it reads (`zexel-curved`, `zexel-cube-size`, `zexel-curved-step`,
+  // `zexel-curved-bounds`), for the method's entry.
   static std::vector<ParamSpec> params();
 
   explicit ZexelCurvedReflectors(const MethodSetup& setup);
@@ -34,17 +35,20 @@ class ZexelCurvedReflectors {
   // Draws the curved reflectors into the bound target, after ScenePasses::begin for the frame's
   // view and before the pass that draws the remaining reflectors in their base colour: that pass
   // then fails the depth test at these pixels (GL_LESS on the same invariant vertex shader).
-  // Draws nothing at order 0 or with `--zexel-curved base`.
+  // Draws nothing at order 0 or with `--zexel-curved base`. The searches add their pixels and
+  // reads to the method's counters (MIRAGE_ZEXEL_COUNT_CURVED_*, bound by the caller).
   void draw(FrameContext& frame) const;
-  // `zexel_curved_reflectors` (served by inverse warping) and `zexel_cube_captures`.
-  void addStats(std::map<std::string, double>& stats) const;
+  // `zexel_curved_reflectors` (served by inverse warping), `zexel_cube_captures`, and from the
+  // method's counters of the last frame, `zexel_curved_reads_per_ray`.
+  void addStats(std::map<std::string, double>& stats, const uint32_t* counters) const;
 
  private:
   bool inverse_;
   int size_;
   ZexelInverseSettings search_;
-  std::vector<int> curved_;  // the reflector instances served, in order (cube = index)
-  ProbeArray cubes_;         // RGBA32F, one cube per curved reflector
+  std::vector<int> curved_;         // the reflector instances served, in order (cube = index)
+  ProbeArray cubes_;                // RGBA32F, one cube per curved reflector
+  ZexelDistancePyramid distances_;  // their distances and the search's bounds
   RecapturePolicy recapture_;
   gpu::Program program_, base_program_;
   std::vector<vec3> centres_;  // where each cube was captured

@@ -202,7 +202,7 @@ class ZexelMethod final : public Method {
         {"exposed_fraction",
          pixels > 0 ? double(counts[MIRAGE_ZEXEL_COUNT_EXPOSED]) / pixels : 0.0},
         {"reflectors_not_planar", double(not_planar_)}};
-    curved_.addStats(s);
+    curved_.addStats(s, counts);
     return s;
   }
 
@@ -331,7 +331,8 @@ MethodEntry zexelMethodEntry() {
       "reflectors inverse-warp a cube map of colour and distance";
   entry.info.max_order = 1;
   entry.info.counters = {"zexel_captures", "zexel_cube_captures"};
-  entry.info.frame_stats = {"zexels_warped", "exposed_fraction", "zexel_resolve_passes"};
+  entry.info.frame_stats = {"zexels_warped", "exposed_fraction", "zexel_resolve_passes",
+                            "zexel_curved_pixels", "zexel_curved_reads_per_ray"};
   entry.info.params = {
       ParamSpec::integer("zexel-size", 16, 65536, 512,
                          "side of each depth-preserving reflection map, in zexels (at most the "
