@@ -3,6 +3,8 @@
 // reflector, and reflectors get one per other reflector; the capture camera frames the quad.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "methods/impostor/billboard_set.h"
 #include "support/scenes.h"
 
@@ -61,6 +63,49 @@ TEST(BillboardSet, CountsAndRanges) {
   EXPECT_EQ(only.position_layers, 2);
   ASSERT_EQ(only.unbillboarded.size(), 1u);
   EXPECT_EQ(only.unbillboarded[0], instanceNamed(scene, "box"));
+}
+
+// A planar reflector keeps a list per side of its plane, each without the billboards wholly on
+// the other side; a curved reflector keeps one list, every billboard in it.
+TEST(BillboardSet, APlanarReflectorsListsHoldWhatLiesOnTheirSide) {
+  const Scene scene = mirrorWallBetweenObjects();
+  const BillboardSet set = placeBillboards(scene, 0.0f, {});
+  const std::vector<int> reflectors = scene.reflectorInstances();
+  ASSERT_EQ(reflectors.size(), 2u);
+  auto names = [&](const ivec4& range, const BillboardSet& in) {
+    std::vector<std::string> out;
+    for (int k = range.x; k < range.x + range.y + range.w; ++k) {
+      const int billboard = in.entries[size_t(k)];
+      out.push_back(scene.instances[size_t(in.billboards[size_t(billboard)].object)].name);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  using Names = std::vector<std::string>;
+  const int wall = reflectors[0] == instanceNamed(scene, "wall") ? 0 : 1;
+  const shading::BillboardRange& lists = set.ranges[size_t(wall)];
+  ASSERT_NEAR(std::abs(lists.plane.z), 1.0f, 1e-6f);  // the plane z = 0
+  EXPECT_NEAR(lists.plane.w, 0.0f, 1e-6f);
+  const bool faces_front = lists.plane.z > 0.0f;
+  const Names front = {"ball-front", "box-front", "floor", "sphere"};
+  const Names back = {"ball-back", "box-back", "floor"};
+  EXPECT_EQ(names(lists.range, set), faces_front ? front : back);
+  EXPECT_EQ(names(lists.back, set), faces_front ? back : front);
+  EXPECT_EQ(shading::billboard_list(lists, vec3(0.0f, 0.3f, 1.0f)),
+            faces_front ? lists.range : lists.back);
+  // The sphere's one list: every object and the wall.
+  const shading::BillboardRange& sphere = set.ranges[size_t(1 - wall)];
+  EXPECT_EQ(sphere.plane, vec4(0.0f));
+  EXPECT_EQ(sphere.back, sphere.range);
+  EXPECT_EQ(names(sphere.range, set),
+            (Names{"ball-back", "ball-front", "box-back", "box-front", "floor", "wall"}));
+  // Off: one list for the wall too.
+  BillboardSetOptions one;
+  one.sides = false;
+  const BillboardSet all = placeBillboards(scene, 0.0f, one);
+  EXPECT_EQ(all.ranges[size_t(wall)].back, all.ranges[size_t(wall)].range);
+  EXPECT_EQ(names(all.ranges[size_t(wall)].range, all),
+            (Names{"ball-back", "ball-front", "box-back", "box-front", "floor", "sphere"}));
 }
 
 TEST(BillboardSet, PlanarBillboardLiesInTheObjectsPlaneAndCoversIt) {

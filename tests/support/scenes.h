@@ -104,4 +104,30 @@ inline Scene mirrorAmongObjects(int count) {
   return s;
 }
 
+// An upright two-sided mirror (3 x 2, in the plane z = 0) over a floor, a box and a ball on each
+// side of it and a mirror sphere in front: the case of a planar reflector's lists per side.
+inline Scene mirrorWallBetweenObjects() {
+  Scene s;
+  s.name = "mirror-wall-between-objects";
+  const int floor = addMesh(s, procedural::quad(10.0f, 10.0f));
+  addInstance(s, "floor", floor,
+              addMaterial(s, Material::checker("floor", kCheckerLight, kCheckerDark, 1.0f)), {});
+  const int wall = addMesh(s, procedural::quad(3.0f, 2.0f));
+  const int mirror = addMaterial(s, Material::mirror("mirror"));
+  addInstance(s, "wall", wall, mirror,
+              placeAt({0.0f, 1.2f, 0.0f}, vec3(1.0f),
+                      glm::angleAxis(glm::radians(90.0f), vec3(1.0f, 0.0f, 0.0f))));
+  const int ball = addMesh(s, procedural::sphere(0.35f, 32, 16));
+  const int red = addMaterial(s, Material::diffuse("red", {0.85f, 0.2f, 0.15f}));
+  const int blue = addMaterial(s, Material::diffuse("blue", {0.2f, 0.35f, 0.85f}));
+  addBox(s, "box-front", {-0.8f, 0.4f, 1.6f}, vec3(0.4f), {0.2f, 0.75f, 0.3f}, 20.0f);
+  addInstance(s, "ball-front", ball, red, placeAt({0.9f, 0.35f, 1.4f}));
+  addBox(s, "box-back", {0.8f, 0.4f, -1.6f}, vec3(0.4f), {0.9f, 0.8f, 0.2f}, 20.0f);
+  addInstance(s, "ball-back", ball, blue, placeAt({-0.9f, 0.35f, -1.4f}));
+  addInstance(s, "sphere", addMesh(s, procedural::sphere(0.4f, 64, 32)), mirror,
+              placeAt({1.9f, 0.6f, 2.2f}));
+  finishScene(s, vec3{2.6f, 2.2f, 5.0f}, vec3{0.0f, 1.0f, 0.0f}, 50.0f);
+  return s;
+}
+
 }  // namespace mirage::test

@@ -49,6 +49,7 @@ struct ReflectorSpheres {
   std::vector<int> instances;
   std::vector<vec3> centre;
   std::vector<float> radius;
+  std::vector<vec4> plane;  // a planar reflector's (unit normal, offset); 0 for a curved one
   vec3 centroid{0.0f};
 };
 
@@ -63,8 +64,46 @@ ReflectorSpheres reflectorSpheres(const Scene& scene, float time) {
     r.centre[k] = b.center();
     r.radius[k] = b.radius();
     r.centroid += b.center() / float(count);
+    vec3 n(0.0f), point(0.0f), normal(0.0f);
+    const mat4 m = scene.instances[size_t(r.instances[k])].matrixAt(time);
+    r.plane.push_back(vec4(0.0f));
+    if (isPlanarInstance(scene, r.instances[k], m, &n) &&
+        planarInstancePlane(scene, r.instances[k], m, b.center() + n, point, normal))
+      r.plane.back() = vec4(normal, glm::dot(normal, point));
   }
   return r;
+}
+
+// A billboard of reflector r's list, with the sphere bounding what it stands for.
+struct ListedBillboard {
+  int index;
+  vec3 centre;
+  float radius;
+};
+
+// Which side of `plane` a sphere lies on: 1 wholly in front (along the normal), -1 wholly
+// behind, 0 across it (or no plane).
+int sideOf(const vec4& plane, const vec3& centre, float radius) {
+  const float signed_distance = glm::dot(vec3(plane), centre) - plane.w;
+  if (vec3(plane) == vec3(0.0f)) return 0;
+  return signed_distance > radius ? 1 : (signed_distance < -radius ? -1 : 0);
+}
+
+// Appends the entries of one side's list (`side` 1: the rays leaving along the plane's normal,
+// -1: the others): the diffuse billboards then the reflective ones, without those wholly on the
+// other side of the plane; returns its range.
+ivec4 appendList(BillboardSet& set, const vec4& plane, int side,
+                 const std::vector<ListedBillboard>& diffuse,
+                 const std::vector<ListedBillboard>& reflective) {
+  ivec4 range(int(set.entries.size()), 0, 0, 0);
+  for (const ListedBillboard& b : diffuse)
+    if (sideOf(plane, b.centre, b.radius) != -side) set.entries.push_back(b.index);
+  range.y = int(set.entries.size()) - range.x;
+  range.z = int(set.entries.size());
+  for (const ListedBillboard& b : reflective)
+    if (sideOf(plane, b.centre, b.radius) != -side) set.entries.push_back(b.index);
+  range.w = int(set.entries.size()) - range.z;
+  return range;
 }
 
 // A planar object's own square, captured head-on from the reflectors' side; `area` is set to
@@ -127,16 +166,19 @@ std::vector<int> addPlanarBillboards(BillboardSet& set, const Scene& scene,
   return planar_index;
 }
 
-// Reflector r's list: the shared planar billboards, its own group billboards, then the
-// reflective billboards of the other reflectors, all seen from its centre.
+// Reflector r's lists: the shared planar billboards, its own group billboards, then the
+// reflective billboards of the other reflectors, all seen from its centre; a planar reflector's
+// two sides each without what lies wholly beyond its plane (BillboardRange).
 void addReflectorList(BillboardSet& set, int r, const Scene& scene,
                       const std::vector<int>& planar_index,
                       const std::vector<std::vector<int>>& groups, float time, float fov,
-                      const ReflectorSpheres& reflectors) {
+                      bool sides, const ReflectorSpheres& reflectors) {
   const vec3 viewer = reflectors.centre[size_t(r)];
-  shading::BillboardRange& range = set.ranges[size_t(r)];
-  range.range.x = int(set.entries.size());
-  for (int index : planar_index) set.entries.push_back(index);
+  std::vector<ListedBillboard> diffuse, reflective;
+  for (int index : planar_index) {
+    const Bounds3 b = scene.instanceBounds(set.billboards[size_t(index)].object, time);
+    diffuse.push_back({index, b.center(), b.radius()});
+  }
   for (const std::vector<int>& group : groups) {
     Bounds3 b;
     for (int i : group) b.extend(scene.instanceBounds(i, time));
@@ -146,25 +188,28 @@ void addReflectorList(BillboardSet& set, int r, const Scene& scene,
     spec.members.assign(group.begin() + 1, group.end());
     spec.reflector = r;
     spec.layer = set.surface_layers++;
-    set.entries.push_back(int(set.billboards.size()));
+    diffuse.push_back({int(set.billboards.size()), b.center(), b.radius()});
     set.billboards.push_back(spec);
   }
-  range.range.y = int(set.entries.size()) - range.range.x;
-  range.range.z = int(set.entries.size());
   for (int k = 0; k < int(reflectors.instances.size()); ++k) {
     if (k == r) continue;
-    BillboardSpec spec =
-        volumeBillboard(reflectors.centre[size_t(k)], reflectors.radius[size_t(k)], viewer, fov);
+    const vec3 centre = reflectors.centre[size_t(k)];
+    const float radius = reflectors.radius[size_t(k)];
+    BillboardSpec spec = volumeBillboard(centre, radius, viewer, fov);
     spec.kind = BillboardSpec::Kind::kReflective;
     spec.object = reflectors.instances[size_t(k)];
     spec.reflector = r;
     spec.represents = k;
     spec.layer = set.surface_layers++;
     spec.position_layer = set.position_layers++;
-    set.entries.push_back(int(set.billboards.size()));
+    reflective.push_back({int(set.billboards.size()), centre, radius});
     set.billboards.push_back(spec);
   }
-  range.range.w = int(set.entries.size()) - range.range.z;
+  shading::BillboardRange& lists = set.ranges[size_t(r)];
+  lists.plane = sides ? reflectors.plane[size_t(r)] : vec4(0.0f);
+  lists.range = appendList(set, lists.plane, 1, diffuse, reflective);
+  lists.back = lists.plane == vec4(0.0f) ? lists.range
+                                         : appendList(set, lists.plane, -1, diffuse, reflective);
 }
 
 }  // namespace
@@ -198,7 +243,8 @@ BillboardSet placeBillboards(const Scene& scene, float time, const BillboardSetO
       addPlanarBillboards(set, scene, instances.planar, time, options, reflectors);
   set.ranges.resize(reflectors.instances.size());
   for (int r = 0; r < int(reflectors.instances.size()); ++r)
-    addReflectorList(set, r, scene, planar_index, groups, time, options.fov_degrees, reflectors);
+    addReflectorList(set, r, scene, planar_index, groups, time, options.fov_degrees, options.sides,
+                     reflectors);
   return set;
 }
 

@@ -42,6 +42,7 @@ struct BillboardSetOptions {
   float fov_degrees = 10.0f;  // the capture camera's field of view (objects, reflectors)
   bool objects = true;        // billboards for non-planar diffuse objects too (else planar only)
   float morph_height = 0.0f;  // > 0: transition walls of this height around the ground (§3.2)
+  bool sides = true;          // a planar reflector's list per side of its plane (BillboardRange)
   // Instances that another impostor stands for (depth maps): no billboard, and not in the
   // captured environment.
   std::vector<int> excluded;

@@ -49,9 +49,19 @@ struct BillboardData {
 // Per reflector (0-based), which list entries its rays test: x, y: first entry and count of
 // diffuse billboards; z, w: first entry and count of reflective billboards (never its own).
 // The reflective entries follow the diffuse ones (z == x + y), so one loop can test both.
+// A planar reflector has two lists: `range` for the rays that leave it towards the side its
+// `plane` faces (dot(dir, n) >= 0), `back` for the others, each without the billboards that lie
+// wholly on the far side of its plane; a curved one has one (`back` == `range`, plane 0).
 struct BillboardRange {
   ivec4 range;
+  ivec4 back;
+  vec4 plane;  // xyz: unit normal n of a planar reflector (0 for a curved one); w: dot(n, point)
 };
+
+// The list that a ray leaving along `dir` tests.
+SHARED_FN ivec4 billboard_list(BillboardRange lists, vec3 dir) {
+  return dot(dir, vec3(lists.plane)) < 0.0f ? lists.back : lists.range;
+}
 
 // ray_quad (shading/proxy.h) with the plane and the inverse edge lengths precomputed: one
 // division per test. Returns t > t_min, or -1 on a miss (uv is then undefined).
@@ -94,7 +104,7 @@ SHARED_END
 
 #ifndef MIRAGE_GLSL
 static_assert(sizeof(mirage::shading::BillboardData) == 6 * 16, "BillboardData layout");
-static_assert(sizeof(mirage::shading::BillboardRange) == 16, "BillboardRange layout");
+static_assert(sizeof(mirage::shading::BillboardRange) == 3 * 16, "BillboardRange layout");
 #endif
 
 #endif  // MIRAGE_METHODS_IMPOSTOR_BILLBOARD_SHARED_H

@@ -75,7 +75,11 @@ std::vector<ParamSpec> billboardStageParams() {
                       "groups per reflector, else merges the smallest and most distant",
                       "auto"),
       ParamSpec::integer("impostor-memory", 16, 1 << 20, 2048,
-                         "impostor textures auto grouping keeps within, in MiB")};
+                         "impostor textures auto grouping keeps within, in MiB"),
+      ParamSpec::choice("impostor-sides", {"on", "off"}, "on",
+                        "a planar reflector keeps a list of billboards for each side of its "
+                        "plane, without those wholly on the other side, and a ray tests the "
+                        "list of the side it leaves into (off: one list, every billboard)")};
   for (ParamSpec& spec : billboardRecaptureParams()) params.push_back(std::move(spec));
   return params;
 }
@@ -85,6 +89,7 @@ BillboardStageOptions billboardStageOptions(const ParamValues& params) {
   o.set.fov_degrees = float(params.real("billboard-fov"));
   o.set.objects = params.choice<bool>("billboard-objects", kAllObjects);
   o.set.morph_height = float(params.real("morph-height"));
+  o.set.sides = params.on("impostor-sides");
   o.billboard_size = params.integer("billboard-size");
   o.envmap_size = params.integer("envmap-size");
   o.recapture = billboardRecapture(params);

@@ -95,7 +95,8 @@ struct BounceHit {
 BounceHit nearest_bounce_hit(vec3 origin, vec3 dir, int from, bool reflective, float t_min,
                              vec3 dox, vec3 doy, vec3 ddx, vec3 ddy) {
   BounceHit h;
-  ivec4 range = billboard_ranges[from].range;
+  // A planar reflector's rays test the list of the side they leave into.
+  ivec4 range = billboard_list(billboard_ranges[from], dir);
   h.t = MISS_DISTANCE;
   h.uv = vec2(0.0f);
   // The reflector's list holds its diffuse billboards, then the reflective ones right after
