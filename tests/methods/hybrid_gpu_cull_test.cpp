@@ -170,7 +170,8 @@ TEST_F(HybridGpuCull, FramesEqualTheCpuPathBitForBit) {
       auto m = renderer.createMethod("hybrid",
                                      {{"points", "20000"},
                                       {"hybrid-culling", culling},
-                                      {"hybrid-cull-on", gpu ? "gpu" : "cpu"}},
+                                      {"hybrid-cull-on", gpu ? "gpu" : "cpu"},
+                                      {"hybrid-lod", "0"}},
                                      settings);
       renderer.render(*m, View(scene.camera(), size), 0.7f, settings);
       images[gpu] = renderer.read().color;

@@ -62,7 +62,9 @@ TEST_F(HybridImages, CullingIsConservativeTheImageDoesNotChange) {
   const Scene scene = objectsOnly();
   const ivec2 size{200, 140};
   FrameRenderer renderer(scene, size);
-  const std::map<std::string, std::string> base = {{"points", "20000"}};
+  // Every point (no level of detail): the modes keep different points, which the subsample's
+  // stride depends on.
+  const std::map<std::string, std::string> base = {{"points", "20000"}, {"hybrid-lod", "0"}};
   std::map<std::string, double> exact, hull, none;
   auto with = [&](const char* mode, std::map<std::string, double>* stats) {
     auto p = base;
@@ -95,10 +97,12 @@ TEST_F(HybridImages, CullingModesGiveTheSameFrameWhereViewVolumesFold) {
     const char* modes[4][2] = {
         {"exact", "cpu"}, {"hull", "cpu"}, {"none", "cpu"}, {"exact", "gpu"}};
     for (int i = 0; i < 4; ++i)
-      frames[i] = renderWith(
-          renderer, scene, size,
-          {{"points", points}, {"hybrid-culling", modes[i][0]}, {"hybrid-cull-on", modes[i][1]}},
-          0.0f, &stats[i]);
+      frames[i] = renderWith(renderer, scene, size,
+                             {{"points", points},
+                              {"hybrid-culling", modes[i][0]},
+                              {"hybrid-cull-on", modes[i][1]},
+                              {"hybrid-lod", "0"}},
+                             0.0f, &stats[i]);
     std::printf(
         "%s: %.0f of %.0f C3RCs fold, %.0f nodes kept for a fold; pairs with a "
         "projection: exact %.0f, hull %.0f, none %.0f\n",
@@ -227,7 +231,9 @@ TEST_F(HybridImages, LevelOfDetailProjectsFewerPointsAndStaysClose) {
   const ivec2 size{360, 256};
   FrameRenderer renderer(scene, size);
   std::map<std::string, double> full, lod;
-  renderWith(renderer, scene, size, kDense, 0.0f, &full);
+  std::map<std::string, std::string> every = kDense;
+  every["hybrid-lod"] = "0";
+  renderWith(renderer, scene, size, every, 0.0f, &full);
   std::map<std::string, std::string> params = kDense;
   params["hybrid-lod"] = "16";
   renderWith(renderer, scene, size, params, 0.0f, &lod);
@@ -258,6 +264,8 @@ TEST(HybridCli, BadParametersExitWithTheAllowedRange) {
       {"--splat-size 9", "--splat-size"},
       {"--kd-min-size 2", "--kd-min-size"},
       {"--hybrid-lod -1", "--hybrid-lod"},
+      {"--hybrid-lod often", "--hybrid-lod"},
+      {"--hybrid-lod 2e6", "--hybrid-lod"},
   };
   for (const Case& c : cases) {
     const CliResult r = runMirage("render --scene teapot-sphere --method hybrid --size 32x32 -o " +
@@ -266,6 +274,27 @@ TEST(HybridCli, BadParametersExitWithTheAllowedRange) {
     EXPECT_NE(r.output.find(c.expect), std::string::npos) << c.args << "\n" << r.output;
     EXPECT_NE(r.output.find("allowed"), std::string::npos) << c.args << "\n" << r.output;
   }
+}
+
+// auto (the default) is 16 points a pixel with the CPU culling and every point with the GPU
+// traversal; a density with the GPU traversal is an error.
+TEST_F(HybridImages, LevelOfDetailAutoIsSixteenWithCpuCullingAndOffOnTheGpu) {
+  const Scene scene = objectsOnly();
+  const ivec2 size{200, 140};
+  FrameRenderer renderer(scene, size);
+  std::map<std::string, double> autos, sixteen, gpu;
+  const Image a = renderWith(renderer, scene, size, kDense, 0.0f, &autos);
+  std::map<std::string, std::string> p = kDense;
+  p["hybrid-lod"] = "16";
+  const Image b = renderWith(renderer, scene, size, p, 0.0f, &sixteen);
+  EXPECT_EQ(autos.at("points_projected"), sixteen.at("points_projected"));
+  EXPECT_LT(autos.at("points_projected"), autos.at("cull_points_kept"));
+  EXPECT_TRUE(mostPixelsWithin(b, a, 0.0f, 0.0, nullptr, "lod-auto"));
+  // The GPU traversal's auto projects what the CPU culling keeps with every point.
+  p = kDense;
+  p["hybrid-cull-on"] = "gpu";
+  renderWith(renderer, scene, size, p, 0.0f, &gpu);
+  EXPECT_EQ(gpu.at("points_projected"), autos.at("cull_points_kept"));
 }
 
 TEST(HybridCli, LevelOfDetailWithGpuCullingIsAClearError) {

@@ -142,7 +142,8 @@ TEST_F(HybridSplats, TheNearerOfTwoSurfacesWinsAtFourMillionPoints) {
   FrameSettings settings;
   settings.order = 1;
   const ivec2 size{200, 200};
-  const RenderPair p = renderWithTruth(scene, "hybrid", size, settings, {{"points", "4000000"}});
+  const RenderPair p = renderWithTruth(scene, "hybrid", size, settings,
+                                       {{"points", "4000000"}, {"hybrid-lod", "0"}});
   int sphere = 0, blue = 0;
   for (size_t i = 0; i < p.cpu.pixelCount(); ++i) {
     if (p.cpu_ids.pixels()[i] == 0 || !reddish(p.cpu.pixels()[i])) continue;
