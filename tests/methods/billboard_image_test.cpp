@@ -16,6 +16,24 @@ namespace {
 
 class BillboardImages : public GlTest {};
 
+// A method's frame and the impostors it tested a ray, with a parameter at two values.
+struct TwoSettings {
+  RenderedFrame frames[2];
+  double tested[2] = {0.0, 0.0};
+};
+TwoSettings renderBoth(FrameRenderer& renderer, const char* method, const View& view,
+                       const FrameSettings& settings, const std::string& param,
+                       const std::string (&values)[2]) {
+  TwoSettings out;
+  for (int k = 0; k < 2; ++k) {
+    auto m = renderer.createMethod(method, {{param, values[k]}}, settings);
+    renderer.render(*m, view, 0.0f, settings);
+    out.frames[k] = renderer.read();
+    out.tested[k] = m->stats().at("impostor_candidates_per_ray");
+  }
+  return out;
+}
+
 TEST_F(BillboardImages, APlanarFloorIsExact) {
   // The floor is its own billboard, captured head-on: a reflected ray meets the billboard where
   // it meets the floor, so only texture resampling separates it from the ray tracer.
@@ -290,9 +308,10 @@ TEST_F(BillboardImages, RecapturesOnlyWhatChanged) {
 // A planar mirror's rays test only the billboards on the side they leave into: seen from in
 // front of the wall and from behind it, the frame is the one with a single list per reflector,
 // and each ray tests fewer billboards. depthmap traces the same lists, its depth-mapped objects
-// besides (their sphere test, per ray, already passes over those behind the wall): fewer or as
-// many. Measured: billboard 6 a ray with one list, 4.52 and 3 per side from in front and behind;
-// depthmap 6 and 6, 6 and 5.
+// besides (their own lists per direction cell, whatever the sides): fewer or as many. Measured,
+// with the default direction cells: billboard 4.13 a ray with one list a cell, 2.65 with a list
+// per side from in front, 5 and 3 from behind; depthmap 4.15 and 4.15, 5 and 5 (at
+// --impostor-cells 0: billboard 6, 4.52 and 3).
 TEST_F(BillboardImages, APlanarMirrorsSideListsChangeNoPixelAndTestFewer) {
   Scene scene = mirrorWallBetweenObjects();
   CameraDesc behind = scene.camera();
@@ -303,15 +322,9 @@ TEST_F(BillboardImages, APlanarMirrorsSideListsChangeNoPixelAndTestFewer) {
   settings.order = 2;
   for (const char* method : {"billboard", "depthmap"})
     for (const CameraDesc& camera : {scene.camera(), behind}) {
-      const View view(camera, size);
-      RenderedFrame frames[2];
-      double tested[2] = {0.0, 0.0};
-      for (int on = 0; on < 2; ++on) {
-        auto m = renderer.createMethod(method, {{"impostor-sides", on ? "on" : "off"}}, settings);
-        renderer.render(*m, view, 0.0f, settings);
-        frames[on] = renderer.read();
-        tested[on] = m->stats().at("impostor_candidates_per_ray");
-      }
+      const TwoSettings both = renderBoth(renderer, method, View(camera, size), settings,
+                                          "impostor-sides", {"off", "on"});
+      const auto& [frames, tested] = both;
       std::printf(
           "%s from (%.1f, %.1f, %.1f): %.2f billboards a ray with one list, %.2f with "
           "a list per side\n",
@@ -325,6 +338,29 @@ TEST_F(BillboardImages, APlanarMirrorsSideListsChangeNoPixelAndTestFewer) {
       EXPECT_TRUE(mostPixelsWithin(displayed(frames[1].color), displayed(frames[0].color),
                                    2.0f / 255, 1e-3, nullptr, std::string("sides-") + method));
     }
+}
+
+// Lists per direction cell (--impostor-cells) keep every impostor a ray of the cell can reach:
+// on spheres9 (nine mirror spheres among six objects) the frame is the one with a single list
+// per reflector, pixel for pixel, and each ray tests a fraction of the impostors. Measured at
+// 8 cells a face edge: billboard 15 a ray with one list, 2.7 with cells; depthmap 15 and 2.8.
+TEST_F(BillboardImages, DirectionCellListsChangeNoPixelAndTestFewer) {
+  Scene scene = makeBuiltinScene("spheres9");
+  const ivec2 size{240, 170};
+  FrameRenderer renderer(scene, size);
+  FrameSettings settings;
+  settings.order = 2;
+  const View view(scene.camera(), size);
+  for (const char* method : {"billboard", "depthmap"}) {
+    const TwoSettings both =
+        renderBoth(renderer, method, view, settings, "impostor-cells", {"0", "8"});
+    const auto& [frames, tested] = both;
+    std::printf("%s: %.2f impostors a ray with one list, %.2f with direction cells\n", method,
+                tested[0], tested[1]);
+    EXPECT_LT(tested[1], 0.4 * tested[0]) << method;
+    EXPECT_TRUE(mostPixelsWithin(displayed(frames[1].color), displayed(frames[0].color), 0.0f, 0.0,
+                                 nullptr, std::string("cells-") + method));
+  }
 }
 
 }  // namespace

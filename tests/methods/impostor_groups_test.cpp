@@ -229,8 +229,9 @@ TEST_F(ImpostorGroupImages, DepthMapsRenderWhatPerObjectCannotHold) {
     EXPECT_NE(per_object->fallbackReason().find("--impostor-groups auto"), std::string::npos)
         << per_object->fallbackReason();
   }
-  const RenderPair automatic =
-      renderWithTruth(scene, "depthmap", size, settings, {}, 0.0f, kMatchedSsaa);
+  // One list a reflector (--impostor-cells 0), so that the count below is every group's.
+  const RenderPair automatic = renderWithTruth(scene, "depthmap", size, settings,
+                                               {{"impostor-cells", "0"}}, 0.0f, kMatchedSsaa);
   EXPECT_EQ(automatic.stats.at("depthmap_groups"), 34.0);
   EXPECT_EQ(automatic.stats.at("depthmap_objects"), 48.0);
   // A ray tests each group's maps once (no billboard but for them: no floor, one reflector).
@@ -253,12 +254,13 @@ TEST_F(ImpostorGroupImages, BillboardGroupsTradeErrorForCountMonotonically) {
   settings.order = 1;
   std::vector<double> psnr;
   for (const char* groups : {"6", "12", "24", "per-object"}) {
-    const RenderPair p = renderWithTruth(scene, "billboard", size, settings,
-                                         {{"impostor-groups", groups}}, 0.0f, kMatchedSsaa);
+    const RenderPair p =
+        renderWithTruth(scene, "billboard", size, settings,
+                        {{"impostor-groups", groups}, {"impostor-cells", "0"}}, 0.0f, kMatchedSsaa);
     const double expected = groups == std::string("per-object") ? 48.0 : std::stod(groups);
     EXPECT_EQ(p.stats.at("impostor_groups"), expected);
     EXPECT_EQ(p.stats.at("diffuse_billboards"), expected);
-    // One reflector, no planar object, order 1: a ray tests the groups' billboards, no more.
+    // One reflector, no planar object, order 1, one list: a ray tests the groups' billboards.
     EXPECT_EQ(p.stats.at("impostor_candidates_per_ray"), expected);
     EXPECT_EQ(p.stats.at("impostor_rays_per_pixel"), 1.0);
     psnr.push_back(reflectorPsnr(p));
@@ -274,13 +276,14 @@ TEST_F(ImpostorGroupImages, CountsTheImpostorsEachRayTests) {
   // spheres9 at order 2: every ray, first bounce or second, tests its reflector's list, the
   // floor's billboard, one per group of the six other objects and the eight other reflectors'
   // reflective billboards (the last bounce tests them too: --last-bounce all); depthmap tests
-  // the six objects through their maps instead. Fewer groups, fewer tests.
+  // the six objects through their maps instead. Fewer groups, fewer tests. One list a
+  // reflector (--impostor-cells 0): the cells' lists are BillboardImages.DirectionCell*'s.
   Spheres9Frames frames;
   for (const auto& [method, groups, expected] :
        {std::tuple{"billboard", "auto", 15.0}, std::tuple{"billboard", "2", 11.0},
         std::tuple{"depthmap", "auto", 15.0}, std::tuple{"depthmap", "3", 12.0}}) {
     const std::map<std::string, double> stats =
-        frames.render(method, {{"impostor-groups", groups}})->stats();
+        frames.render(method, {{"impostor-groups", groups}, {"impostor-cells", "0"}})->stats();
     EXPECT_EQ(stats.at("impostor_candidates_per_ray"), expected) << method << " " << groups;
     EXPECT_GT(stats.at("impostor_pixels"), 1000.0);
     // Some rays bounce twice, off another sphere's reflective billboard; most leave at once.

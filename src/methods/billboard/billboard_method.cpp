@@ -13,7 +13,8 @@ class BillboardMethod final : public Method {
       : stage_(billboardStageOptions(setup.params), setup.gpu.scene()),
         last_bounce_reflective_(lastBounceReflective(setup.params)),
         program_(gpu::Program::graphics("render/shaders/scene.vert",
-                                        "methods/billboard/billboard.frag")),
+                                        "methods/billboard/billboard.frag",
+                                        stage_.shaderDefines())),
         base_program_(baseColourProgram()) {}
 
   void update(FrameContext& frame) override { stage_.update(frame); }

@@ -13,10 +13,12 @@
 layout(std430, binding = MIRAGE_BIND_DEPTHMAPS) readonly buffer DepthMapBlock {
   DepthMapData depthmaps[];
 };
+layout(std430, binding = MIRAGE_BIND_DEPTHMAP_LISTS) readonly buffer DepthMapListBlock {
+  int depthmap_lists[];
+};
 layout(binding = MIRAGE_UNIT_DEPTHMAP_COLOR) uniform sampler2DArray u_depthmap_color;
 layout(binding = MIRAGE_UNIT_DEPTHMAP_SRDM) uniform sampler2DArray u_srdm;
 layout(binding = MIRAGE_UNIT_DEPTHMAP_DEPTH) uniform sampler2DArray u_depthmap_depth;
-uniform int u_depthmap_count = 0;
 uniform int u_depthmap_size = 256;
 uniform int u_srdm_n = 60;
 uniform int u_srdm_m = 8;
@@ -125,11 +127,14 @@ bool impostor_extra_hit(vec3 origin, vec3 dir, int from, bool reflective, float 
   g_t_best = t_best;
   g_end = vec4(0.0f);
   bool found = false;
-  for (int i = 0; i < u_depthmap_count;) {
+  // The objects of the list of the reflector and direction cell the ray leaves by: those it can
+  // reach (candidate_cells.h), a reflector's own maps in its own lists.
+  int list = billboard_list_index(from, dir, u_billboard_cells);
+  int listed = depthmap_lists[2 * list];
+  for (int e = listed; e < listed + depthmap_lists[2 * list + 1]; ++e) {
     // The object's maps follow each other; the first holds their count.
-    int count = max(depthmaps[i].info.w, 1);
-    int first = i;
-    i += count;
+    int first = depthmap_lists[e];
+    int count = max(depthmaps[first].info.w, 1);
     // A reflector's own maps serve only the rays that leave it.
     int reflector = kSelfMaps ? instances[depthmaps[first].info.z].ids.y - 1 : -1;
     bool self = reflector >= 0;

@@ -7,6 +7,7 @@
 #include "methods/depthmap/depthmap_capture.h"
 #include "methods/depthmap/depthmap_shared.h"
 #include "methods/impostor/billboard_stage.h"
+#include "methods/impostor/candidate_cells.h"
 #include "methods/recapture_params.h"
 #include "render/base_colour.h"
 
@@ -92,7 +93,7 @@ class DepthMapMethod final : public Method {
         last_bounce_reflective_(lastBounceReflective(setup.params)),
         program_(gpu::Program::graphics("render/shaders/scene.vert",
                                         "methods/depthmap/depthmap.frag",
-                                        shaderDefines(specs_, setup.params))),
+                                        shaderDefines(specs_, setup.params, stage_))),
         base_program_(baseColourProgram()) {}
 
   void update(FrameContext& frame) override {
@@ -119,6 +120,7 @@ class DepthMapMethod final : public Method {
       d.bound = depthMapSphere(s, gpu.instanceMatrix(s.instance));
       data.push_back(d);
     }
+    uploadLists(gpu, data);
     if (data.empty()) data.push_back(shading::DepthMapData{});
     maps_.upload(std::span<const shading::DepthMapData>(data));
     updated_ = true;
@@ -128,10 +130,10 @@ class DepthMapMethod final : public Method {
   void render(FrameContext& frame) override {
     if (!stage_.beginFrame(frame, program_, base_program_, last_bounce_reflective_)) return;
     maps_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_DEPTHMAPS);
+    lists_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_DEPTHMAP_LISTS);
     capture_.colors().bind(MIRAGE_UNIT_DEPTHMAP_COLOR);
     capture_.srdms().bind(MIRAGE_UNIT_DEPTHMAP_SRDM);
     capture_.depths().bind(MIRAGE_UNIT_DEPTHMAP_DEPTH);
-    program_.set("u_depthmap_count", int(specs_.size()));
     program_.set("u_depthmap_size", options_.size);
     program_.set("u_srdm_n", srdm_.domains);
     program_.set("u_srdm_m", srdm_.points);
@@ -156,11 +158,38 @@ class DepthMapMethod final : public Method {
   }
 
  private:
+  // The objects' candidate lists per reflector and direction cell (MIRAGE_BIND_DEPTHMAP_LISTS):
+  // each object by its maps' sphere, a reflector's maps of itself in its own lists only.
+  void uploadLists(const GpuScene& gpu, const std::vector<shading::DepthMapData>& data) {
+    const std::vector<int> reflectors = gpu.scene().reflectorInstances();
+    std::vector<BoundingSphere> spheres;
+    std::vector<int> owner, first_map;
+    for (size_t i = 0; i < specs_.size(); ++i) {
+      if (specs_[i].index != 0) continue;
+      spheres.push_back({vec3(data[i].bound), data[i].bound.w});
+      const auto self = std::find(reflectors.begin(), reflectors.end(), specs_[i].instance);
+      owner.push_back(specs_[i].reflector ? int(self - reflectors.begin()) : -1);
+      first_map.push_back(int(i));
+    }
+    const CellLists lists = cellLists(reflectorVertexSpheres(gpu.scene(), gpu.time()),
+                                      stage_.set().cells, spheres, owner);
+    const int head = 2 * int(lists.ranges.size());
+    std::vector<int> words;
+    for (const ivec2& range : lists.ranges) {
+      words.push_back(head + range.x);
+      words.push_back(range.y);
+    }
+    for (int candidate : lists.entries) words.push_back(first_map[size_t(candidate)]);
+    if (words.empty()) words.push_back(0);
+    lists_.upload(std::span<const int>(words));
+  }
+
   static std::vector<std::string> shaderDefines(const std::vector<DepthMapSpec>& specs,
-                                                const ParamValues& params) {
-    std::vector<std::string> defines{
-        "DEPTHMAP_SEARCH " + std::to_string(depthMapSearch(params)),
-        "DEPTHMAP_TRIES " + std::to_string(params.integer("depthmap-tries"))};
+                                                const ParamValues& params,
+                                                const BillboardStage& stage) {
+    std::vector<std::string> defines = stage.shaderDefines();
+    defines.push_back("DEPTHMAP_SEARCH " + std::to_string(depthMapSearch(params)));
+    defines.push_back("DEPTHMAP_TRIES " + std::to_string(params.integer("depthmap-tries")));
     if (std::any_of(specs.begin(), specs.end(), [](const DepthMapSpec& s) { return s.reflector; }))
       defines.push_back("DEPTHMAP_SELF");
     return defines;
@@ -182,7 +211,7 @@ class DepthMapMethod final : public Method {
   RecapturePolicy recapture_;  // the colour maps' re-shading, as the billboards'
   bool last_bounce_reflective_;
   gpu::Program program_, base_program_;
-  gpu::Buffer maps_;
+  gpu::Buffer maps_, lists_;
   int last_captures_ = 0;
   bool updated_ = false;
   uint64_t updated_version_ = 0;

@@ -13,6 +13,9 @@
 #define MIRAGE_UNIT_DEPTHMAP_COLOR 8   // sampler2DArray RGBA16F, mip-mapped; layer = map
 #define MIRAGE_UNIT_DEPTHMAP_SRDM 9    // sampler2DArray RGBA32F; x pair, y row, layer map n + i
 #define MIRAGE_UNIT_DEPTHMAP_DEPTH 10  // sampler2DArray (depth); layer = map
+// SSBO int[]: the objects' candidate lists per reflector and direction cell: (first, count) of
+// list L at 2 L and 2 L + 1, pointing at the first maps of its objects further on.
+#define MIRAGE_BIND_DEPTHMAP_LISTS 9
 
 // The ray-depth-map search the depth-map shader compiles in (its define DEPTHMAP_SEARCH):
 #define MIRAGE_DEPTHMAP_SEARCH_SRDM 0             // one SRDM row (the paper)

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <utility>
 
+#include "methods/impostor/candidate_cells.h"
+
 namespace mirage {
 
 namespace {
@@ -50,6 +52,7 @@ struct ReflectorSpheres {
   std::vector<vec3> centre;
   std::vector<float> radius;
   std::vector<vec4> plane;  // a planar reflector's (unit normal, offset); 0 for a curved one
+  std::vector<BoundingSphere> vertices;  // around the centre, every vertex: where rays start
   vec3 centroid{0.0f};
 };
 
@@ -63,6 +66,7 @@ ReflectorSpheres reflectorSpheres(const Scene& scene, float time) {
     Bounds3 b = scene.instanceBounds(r.instances[k], time);
     r.centre[k] = b.center();
     r.radius[k] = b.radius();
+    r.vertices.push_back(vertexSphere(scene, r.instances[k], time));
     r.centroid += b.center() / float(count);
     vec3 n(0.0f), point(0.0f), normal(0.0f);
     const mat4 m = scene.instances[size_t(r.instances[k])].matrixAt(time);
@@ -74,12 +78,26 @@ ReflectorSpheres reflectorSpheres(const Scene& scene, float time) {
   return r;
 }
 
-// A billboard of reflector r's list, with the sphere bounding what it stands for.
+// A billboard of reflector r's list, with the sphere bounding what it stands for and the one
+// bounding where its alpha test passes.
 struct ListedBillboard {
   int index;
   vec3 centre;
   float radius;
+  BoundingSphere covered;
 };
+
+// Where the alpha test of billboard `spec` (framing `object`) passes.
+BoundingSphere coveredBy(const BillboardSpec& spec, const BoundingSphere& object, int texels) {
+  return coveredSphere(object, glm::length(spec.camera.position - object.centre),
+                       glm::length(spec.edge_u) / float(std::max(texels, 1)));
+}
+
+// A planar billboard's quad: its alpha test passes inside it.
+BoundingSphere quadSphere(const BillboardSpec& spec) {
+  return {spec.corner + 0.5f * (spec.edge_u + spec.edge_v),
+          0.5f * glm::length(spec.edge_u + spec.edge_v) * 1.01f};
+}
 
 // Which side of `plane` a sphere lies on: 1 wholly in front (along the normal), -1 wholly
 // behind, 0 across it (or no plane).
@@ -89,19 +107,31 @@ int sideOf(const vec4& plane, const vec3& centre, float radius) {
   return signed_distance > radius ? 1 : (signed_distance < -radius ? -1 : 0);
 }
 
-// Appends the entries of one side's list (`side` 1: the rays leaving along the plane's normal,
-// -1: the others): the diffuse billboards then the reflective ones, without those wholly on the
-// other side of the plane; returns its range.
-ivec4 appendList(BillboardSet& set, const vec4& plane, int side,
+// Which billboards one list keeps: those not wholly beyond `plane` from `side` (1: the rays
+// leaving along the plane's normal, -1: the others), that a ray from `origin` along a direction
+// of `cone` can reach.
+struct ListFilter {
+  vec4 plane;
+  int side;
+  BoundingSphere origin;
+  DirectionCone cone;
+  bool keeps(const ListedBillboard& b) const {
+    return sideOf(plane, b.centre, b.radius) != -side && mayReach(origin, cone, b.covered);
+  }
+};
+
+// Appends the entries of one list: the diffuse billboards then the reflective ones that
+// `filter` keeps; returns its range.
+ivec4 appendList(BillboardSet& set, const ListFilter& filter,
                  const std::vector<ListedBillboard>& diffuse,
                  const std::vector<ListedBillboard>& reflective) {
   ivec4 range(int(set.entries.size()), 0, 0, 0);
   for (const ListedBillboard& b : diffuse)
-    if (sideOf(plane, b.centre, b.radius) != -side) set.entries.push_back(b.index);
+    if (filter.keeps(b)) set.entries.push_back(b.index);
   range.y = int(set.entries.size()) - range.x;
   range.z = int(set.entries.size());
   for (const ListedBillboard& b : reflective)
-    if (sideOf(plane, b.centre, b.radius) != -side) set.entries.push_back(b.index);
+    if (filter.keeps(b)) set.entries.push_back(b.index);
   range.w = int(set.entries.size()) - range.z;
   return range;
 }
@@ -166,50 +196,88 @@ std::vector<int> addPlanarBillboards(BillboardSet& set, const Scene& scene,
   return planar_index;
 }
 
-// Reflector r's lists: the shared planar billboards, its own group billboards, then the
-// reflective billboards of the other reflectors, all seen from its centre; a planar reflector's
-// two sides each without what lies wholly beyond its plane (BillboardRange).
-void addReflectorList(BillboardSet& set, int r, const Scene& scene,
-                      const std::vector<int>& planar_index,
-                      const std::vector<std::vector<int>>& groups, float time, float fov,
-                      bool sides, const ReflectorSpheres& reflectors) {
+// What every reflector's lists are made of: the planar billboards (shared), the groups of
+// objects (a billboard each per reflector) with the spheres around their vertices, and the
+// reflectors.
+struct ListSources {
+  const std::vector<int>& planar_index;
+  const std::vector<std::vector<int>>& groups;
+  std::vector<BoundingSphere> group_vertices;
+  const ReflectorSpheres& reflectors;
+};
+
+// The sphere around the vertices of a group's members, centred on their bounds' centre.
+BoundingSphere groupVertexSphere(const Scene& scene, const std::vector<int>& group, float time) {
+  Bounds3 b;
+  for (int i : group) b.extend(scene.instanceBounds(i, time));
+  BoundingSphere s{b.center(), 0.0f};
+  for (int i : group) {
+    const BoundingSphere member = vertexSphere(scene, i, time);
+    s.radius = std::max(s.radius, glm::length(member.centre - s.centre) + member.radius);
+  }
+  return s;
+}
+
+// Reflector r's lists, one per direction cell (and side of a planar reflector's plane),
+// each without what its rays cannot reach (ListFilter).
+void appendCellLists(BillboardSet& set, int r, const ListSources& sources, bool sides,
+                     const std::vector<ListedBillboard>& diffuse,
+                     const std::vector<ListedBillboard>& reflective) {
+  const vec4 plane = sides ? sources.reflectors.plane[size_t(r)] : vec4(0.0f);
+  const BoundingSphere origin = sources.reflectors.vertices[size_t(r)];
+  const int cells = shading::direction_cell_count(set.cells);
+  for (int cell = 0; cell < cells; ++cell) {
+    const DirectionCone cone = directionCellCone(cell, set.cells);
+    shading::BillboardRange& lists = set.ranges[size_t(r * cells + cell)];
+    lists.plane = plane;
+    lists.range = appendList(set, {plane, 1, origin, cone}, diffuse, reflective);
+    lists.back = plane == vec4(0.0f)
+                     ? lists.range
+                     : appendList(set, {plane, -1, origin, cone}, diffuse, reflective);
+  }
+}
+
+// Reflector r's billboards and lists: the shared planar billboards, its own group billboards,
+// then the reflective billboards of the other reflectors, all seen from its centre.
+void addReflectorList(BillboardSet& set, int r, const Scene& scene, const ListSources& sources,
+                      float time, const BillboardSetOptions& options) {
+  const ReflectorSpheres& reflectors = sources.reflectors;
   const vec3 viewer = reflectors.centre[size_t(r)];
   std::vector<ListedBillboard> diffuse, reflective;
-  for (int index : planar_index) {
+  for (int index : sources.planar_index) {
     const Bounds3 b = scene.instanceBounds(set.billboards[size_t(index)].object, time);
-    diffuse.push_back({index, b.center(), b.radius()});
+    diffuse.push_back({index, b.center(), b.radius(), quadSphere(set.billboards[size_t(index)])});
   }
-  for (const std::vector<int>& group : groups) {
+  for (size_t g = 0; g < sources.groups.size(); ++g) {
+    const std::vector<int>& group = sources.groups[g];
     Bounds3 b;
     for (int i : group) b.extend(scene.instanceBounds(i, time));
-    BillboardSpec spec = volumeBillboard(b.center(), b.radius(), viewer, fov);
+    BillboardSpec spec = volumeBillboard(b.center(), b.radius(), viewer, options.fov_degrees);
     spec.kind = BillboardSpec::Kind::kObject;
     spec.object = group.front();
     spec.members.assign(group.begin() + 1, group.end());
     spec.reflector = r;
     spec.layer = set.surface_layers++;
-    diffuse.push_back({int(set.billboards.size()), b.center(), b.radius()});
+    diffuse.push_back({int(set.billboards.size()), b.center(), b.radius(),
+                       coveredBy(spec, sources.group_vertices[g], options.texels)});
     set.billboards.push_back(spec);
   }
   for (int k = 0; k < int(reflectors.instances.size()); ++k) {
     if (k == r) continue;
     const vec3 centre = reflectors.centre[size_t(k)];
     const float radius = reflectors.radius[size_t(k)];
-    BillboardSpec spec = volumeBillboard(centre, radius, viewer, fov);
+    BillboardSpec spec = volumeBillboard(centre, radius, viewer, options.fov_degrees);
     spec.kind = BillboardSpec::Kind::kReflective;
     spec.object = reflectors.instances[size_t(k)];
     spec.reflector = r;
     spec.represents = k;
     spec.layer = set.surface_layers++;
     spec.position_layer = set.position_layers++;
-    reflective.push_back({int(set.billboards.size()), centre, radius});
+    reflective.push_back({int(set.billboards.size()), centre, radius,
+                          coveredBy(spec, reflectors.vertices[size_t(k)], options.texels)});
     set.billboards.push_back(spec);
   }
-  shading::BillboardRange& lists = set.ranges[size_t(r)];
-  lists.plane = sides ? reflectors.plane[size_t(r)] : vec4(0.0f);
-  lists.range = appendList(set, lists.plane, 1, diffuse, reflective);
-  lists.back = lists.plane == vec4(0.0f) ? lists.range
-                                         : appendList(set, lists.plane, -1, diffuse, reflective);
+  appendCellLists(set, r, sources, options.sides, diffuse, reflective);
 }
 
 }  // namespace
@@ -241,10 +309,13 @@ BillboardSet placeBillboards(const Scene& scene, float time, const BillboardSetO
     for (int i : instances.objects) groups.push_back({i});
   const std::vector<int> planar_index =
       addPlanarBillboards(set, scene, instances.planar, time, options, reflectors);
-  set.ranges.resize(reflectors.instances.size());
+  set.cells = std::max(options.cells, 0);
+  set.ranges.resize(reflectors.instances.size() * size_t(shading::direction_cell_count(set.cells)));
+  ListSources sources{planar_index, groups, {}, reflectors};
+  for (const std::vector<int>& group : groups)
+    sources.group_vertices.push_back(groupVertexSphere(scene, group, time));
   for (int r = 0; r < int(reflectors.instances.size()); ++r)
-    addReflectorList(set, r, scene, planar_index, groups, time, options.fov_degrees, options.sides,
-                     reflectors);
+    addReflectorList(set, r, scene, sources, time, options);
   return set;
 }
 

@@ -43,6 +43,10 @@ struct BillboardSetOptions {
   bool objects = true;        // billboards for non-planar diffuse objects too (else planar only)
   float morph_height = 0.0f;  // > 0: transition walls of this height around the ground (§3.2)
   bool sides = true;          // a planar reflector's list per side of its plane (BillboardRange)
+  // Lists per direction cell (billboard_shared.h, direction_cell): g x g cells a cube face; 0:
+  // one list a reflector (and side).
+  int cells = 0;
+  int texels = 256;  // the billboards' texture side, in texels (their coverage's resolution)
   // Instances that another impostor stands for (depth maps): no billboard, and not in the
   // captured environment.
   std::vector<int> excluded;
@@ -53,8 +57,10 @@ struct BillboardSetOptions {
 
 struct BillboardSet {
   std::vector<BillboardSpec> billboards;
-  // Per reflector (0-based): the entries its rays test, into `entries`.
+  // Per reflector (0-based) and direction cell, the entries its rays test, into `entries`: the
+  // list of reflector r and cell c is ranges[billboard_list_index(r, dir, cells)].
   std::vector<shading::BillboardRange> ranges;
+  int cells = 0;
   std::vector<int> entries;
   int surface_layers = 0, position_layers = 0;
   // Diffuse instances with no billboard (they go into the captured environment).

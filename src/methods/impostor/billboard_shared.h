@@ -46,12 +46,12 @@ struct BillboardData {
                 // moved since the capture, the quad carried with it); w: unused
 };
 
-// Per reflector (0-based), which list entries its rays test: x, y: first entry and count of
-// diffuse billboards; z, w: first entry and count of reflective billboards (never its own).
-// The reflective entries follow the diffuse ones (z == x + y), so one loop can test both.
-// A planar reflector has two lists: `range` for the rays that leave it towards the side its
-// `plane` faces (dot(dir, n) >= 0), `back` for the others, each without the billboards that lie
-// wholly on the far side of its plane; a curved one has one (`back` == `range`, plane 0).
+// Per reflector (0-based) and direction cell, which list entries its rays test: x, y: first entry
+// and count of diffuse billboards; z, w: first entry and count of reflective billboards (never its
+// own). The reflective entries follow the diffuse ones (z == x + y), so one loop can test both. A
+// planar reflector has two lists: `range` for the rays that leave it towards the side its `plane`
+// faces (dot(dir, n) >= 0), `back` for the others, each without the billboards that lie wholly on
+// the far side of its plane; a curved one has one (`back` == `range`, plane 0).
 struct BillboardRange {
   ivec4 range;
   ivec4 back;
@@ -74,6 +74,47 @@ SHARED_FN float billboard_hit(BillboardData b, vec3 origin, vec3 dir, float t_mi
   uv = vec2(dot(local, vec3(b.edge_u)) * b.edge_u.w, dot(local, vec3(b.edge_v)) * b.edge_v.w);
   bool inside = uv.x >= 0.0f && uv.x <= 1.0f && uv.y >= 0.0f && uv.y <= 1.0f;
   return (t > t_min && inside && abs(denom) > 1.0e-12f) ? t : -1.0f;
+}
+
+// Direction cells (--impostor-cells g): a reflector's lists are kept per cell of the directions
+// its rays leave along, the cells of a cube map with g x g cells a face (6 g^2 in all; g = 0:
+// one cell, every direction). A cell's list holds only the billboards that a ray leaving the
+// reflector along a direction of the cell can reach (candidate_cells.h).
+SHARED_FN int direction_cell_count(int g) {
+  return g > 0 ? 6 * g * g : 1;
+}
+
+// The cell of direction `dir` (any length): face 0..5 (+x, -x, +y, -y, +z, -z), then the cell
+// (column, row) of the face's (u, v) in [-1, 1]: +-x faces (y, z), +-y (z, x), +-z (x, y), each
+// divided by the major component.
+SHARED_FN int direction_cell(vec3 dir, int g) {
+  if (g <= 0) return 0;
+  vec3 a = abs(dir);
+  int face = 0;
+  vec2 uv = vec2(0.0f);
+  float major = 1.0f;
+  if (a.x >= a.y && a.x >= a.z) {
+    face = dir.x >= 0.0f ? 0 : 1;
+    uv = vec2(dir.y, dir.z);
+    major = a.x;
+  } else if (a.y >= a.z) {
+    face = dir.y >= 0.0f ? 2 : 3;
+    uv = vec2(dir.z, dir.x);
+    major = a.y;
+  } else {
+    face = dir.z >= 0.0f ? 4 : 5;
+    uv = vec2(dir.x, dir.y);
+    major = a.z;
+  }
+  vec2 f = (uv / max(major, 1.0e-30f) * 0.5f + 0.5f) * float(g);
+  ivec2 c = clamp(ivec2(floor(f)), ivec2(0), ivec2(g - 1));
+  return face * g * g + c.y * g + c.x;
+}
+
+// The list of reflector `reflector` (0-based) that a ray leaving it along `dir` tests, among
+// lists[] (direction_cell_count(g) per reflector).
+SHARED_FN int billboard_list_index(int reflector, vec3 dir, int g) {
+  return reflector * direction_cell_count(g) + direction_cell(dir, g);
 }
 
 // The data of the quad corner + u * edge_u + v * edge_v (u, v in [0, 1]).

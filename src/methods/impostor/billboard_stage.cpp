@@ -79,7 +79,11 @@ std::vector<ParamSpec> billboardStageParams() {
       ParamSpec::choice("impostor-sides", {"on", "off"}, "on",
                         "a planar reflector keeps a list of billboards for each side of its "
                         "plane, without those wholly on the other side, and a ray tests the "
-                        "list of the side it leaves into (off: one list, every billboard)")};
+                        "list of the side it leaves into (off: one list, every billboard)"),
+      ParamSpec::integer("impostor-cells", 0, 16, 8,
+                         "a reflector keeps its lists per cell of the directions its rays "
+                         "leave along (N x N cells a cube face): each without the impostors "
+                         "that no ray of the cell can reach (0: one list, every direction)")};
   for (ParamSpec& spec : billboardRecaptureParams()) params.push_back(std::move(spec));
   return params;
 }
@@ -90,7 +94,9 @@ BillboardStageOptions billboardStageOptions(const ParamValues& params) {
   o.set.objects = params.choice<bool>("billboard-objects", kAllObjects);
   o.set.morph_height = float(params.real("morph-height"));
   o.set.sides = params.on("impostor-sides");
+  o.set.cells = params.integer("impostor-cells");
   o.billboard_size = params.integer("billboard-size");
+  o.set.texels = o.billboard_size;
   o.envmap_size = params.integer("envmap-size");
   o.recapture = billboardRecapture(params);
   o.groups = parseGroupSetting(params.text("impostor-groups"), "--impostor-groups");
@@ -159,6 +165,7 @@ void BillboardStage::bind(const gpu::Program& program, const GpuScene& gpu) cons
   const bool captured_env = !set_.environmentInstances().empty();
   (captured_env ? environment_ : gpu.environment()).bind(MIRAGE_UNIT_BILLBOARD_ENV);
   program.set("u_ground", set_.ground);
+  program.set("u_billboard_cells", set_.cells);
   if (set_.ground >= 0) {
     program.set("u_morph_min", set_.morph_box.lo);
     program.set("u_morph_max", set_.morph_box.hi);
@@ -182,6 +189,11 @@ bool BillboardStage::beginFrame(FrameContext& frame, const gpu::Program& program
   counts_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_IMPOSTOR_COUNTS);
   counted_ = true;
   return true;
+}
+
+std::vector<std::string> BillboardStage::shaderDefines() const {
+  if (options_.set.morph_height > 0.0f) return {"IMPOSTOR_MORPH"};
+  return {};
 }
 
 std::vector<std::string> BillboardStage::frameStats() {
@@ -208,7 +220,8 @@ std::map<std::string, double> BillboardStage::stats() const {
           {"billboard_drift_degrees", double(capture_.largestDriftDegrees())},
           {"impostor_objects", double(grouping_.objects)},
           {"impostor_groups", double(grouping_.groups.size())},
-          {"billboard_layers", double(set_.surface_layers + set_.position_layers)}};
+          {"billboard_layers", double(set_.surface_layers + set_.position_layers)},
+          {"billboard_list_entries", double(set_.entries.size())}};
 }
 
 // Diffuse objects without impostors (and the ground, when it morphs into the environment) are

@@ -63,6 +63,8 @@ class BillboardStage {
   bool beginFrame(FrameContext& frame, const gpu::Program& program,
                   const gpu::Program& base_program, bool last_bounce_reflective) const;
   bool empty() const { return set_.ranges.empty(); }
+  // The defines impostor_trace.glsl needs for these options (IMPOSTOR_MORPH: the morph's box).
+  std::vector<std::string> shaderDefines() const;
   // The stats every impostor method's frame reports (MethodInfo::frame_stats): the impostors a
   // reflected ray tested on average and the rays a reflector pixel traced, in the last frame.
   static std::vector<std::string> frameStats();

@@ -2,7 +2,7 @@
 // billboard of its reflector's list, and every object whose depth maps it searches) and the rays
 // traced, summed over the reflector pixels into atomics (MIRAGE_IMPOSTOR_*), one add of each a
 // pixel. Included by the impostor methods' shaders before their hooks, which count their own
-// impostors into g_impostor_candidates.
+// impostors into g_impostor_candidates. It also declares the lists' direction cells.
 #include "methods/impostor/billboard_shared.h"
 
 // The counts are side effects: without early fragment tests a fragment behind the reflectors'
@@ -12,6 +12,10 @@ layout(early_fragment_tests) in;
 layout(std430, binding = MIRAGE_BIND_IMPOSTOR_COUNTS) buffer ImpostorCounts {
   uint impostor_counts[MIRAGE_IMPOSTOR_COUNTS];
 };
+
+// --impostor-cells: the candidate lists' direction cells a cube face edge (0: one list a
+// reflector), for the billboards' lists and the hooks' own (billboard_list_index).
+uniform int u_billboard_cells = 0;
 
 int g_impostor_candidates = 0;
 int g_impostor_rays = 0;

@@ -35,8 +35,9 @@ layout(std430, binding = MIRAGE_BIND_BILLBOARD_ENTRIES) readonly buffer EntryBlo
 layout(binding = MIRAGE_UNIT_BILLBOARD_SURFACE) uniform sampler2DArray u_billboard_surface;
 layout(binding = MIRAGE_UNIT_BILLBOARD_POSITION) uniform sampler2DArray u_billboard_position;
 layout(binding = MIRAGE_UNIT_BILLBOARD_ENV) uniform samplerCube u_billboard_env;
-// The billboard-to-environment morph (§3.2; u_ground >= 0 when on): the ground billboard and its
-// transition walls form the box [u_morph_min, u_morph_max]; E = u_morph_centre.
+// The billboard-to-environment morph (§3.2; compiled in with IMPOSTOR_MORPH, the stage's define
+// for --morph-height > 0; u_ground >= 0 when on): the ground billboard and its transition walls
+// form the box [u_morph_min, u_morph_max]; E = u_morph_centre.
 uniform int u_ground = -1;
 uniform vec3 u_morph_min;
 uniform vec3 u_morph_max;
@@ -95,8 +96,10 @@ struct BounceHit {
 BounceHit nearest_bounce_hit(vec3 origin, vec3 dir, int from, bool reflective, float t_min,
                              vec3 dox, vec3 doy, vec3 ddx, vec3 ddy) {
   BounceHit h;
-  // A planar reflector's rays test the list of the side they leave into.
-  ivec4 range = billboard_list(billboard_ranges[from], dir);
+  // The list of the direction cell the ray leaves along; a planar reflector's, of the side
+  // it leaves into.
+  ivec4 range =
+      billboard_list(billboard_ranges[billboard_list_index(from, dir, u_billboard_cells)], dir);
   h.t = MISS_DISTANCE;
   h.uv = vec2(0.0f);
   // The reflector's list holds its diffuse billboards, then the reflective ones right after
@@ -112,7 +115,12 @@ BounceHit nearest_bounce_hit(vec3 origin, vec3 dir, int from, bool reflective, f
   // The ground box, if nearer than every billboard: the ground billboard through its floor,
   // the morph on a wall, the environment through the open top.
   int face = -1;
+#ifdef IMPOSTOR_MORPH
   h.t_box = u_ground >= 0 ? ray_box_exit(origin, dir, u_morph_min, u_morph_max, face) : -1.0f;
+#else
+  // No morph (--morph-height 0): compiled out, since llvmpipe would pay for the box test.
+  h.t_box = -1.0f;
+#endif
   h.box = h.t_box >= 0.0f && h.t_box < h.t && face != MIRAGE_BOX_MAX_Y;
   if (h.box && face == MIRAGE_BOX_MIN_Y) {
     // The box's floor is the ground's plane: the quad's coordinates of the same point.
