@@ -10,7 +10,7 @@
 layout(early_fragment_tests) in;
 
 layout(std430, binding = MIRAGE_BIND_IMPOSTOR_COUNTS) buffer ImpostorCounts {
-  uint impostor_counts[MIRAGE_IMPOSTOR_COUNTS];
+  uint impostor_counts[MIRAGE_IMPOSTOR_COUNT_SLOTS * MIRAGE_IMPOSTOR_SLOT_WORDS];
 };
 
 // --impostor-cells: the candidate lists' direction cells a cube face edge (0: one list a
@@ -21,7 +21,9 @@ int g_impostor_candidates = 0;
 int g_impostor_rays = 0;
 
 void impostor_count_pixel() {
-  atomicAdd(impostor_counts[MIRAGE_IMPOSTOR_CANDIDATES], uint(g_impostor_candidates));
-  atomicAdd(impostor_counts[MIRAGE_IMPOSTOR_RAYS], uint(g_impostor_rays));
-  atomicAdd(impostor_counts[MIRAGE_IMPOSTOR_PIXELS], 1u);
+  ivec2 tile = ivec2(gl_FragCoord.xy) >> 6;
+  int slot = ((tile.x + 5 * tile.y) & (MIRAGE_IMPOSTOR_COUNT_SLOTS - 1)) * MIRAGE_IMPOSTOR_SLOT_WORDS;
+  atomicAdd(impostor_counts[slot + MIRAGE_IMPOSTOR_CANDIDATES], uint(g_impostor_candidates));
+  atomicAdd(impostor_counts[slot + MIRAGE_IMPOSTOR_RAYS], uint(g_impostor_rays));
+  atomicAdd(impostor_counts[slot + MIRAGE_IMPOSTOR_PIXELS], 1u);
 }
