@@ -220,10 +220,15 @@ TEST(ViewUnderXvfb, WindowInputReachesTheViewer) {
       "--frames 100000 --record-events {} --report {} > {} 2>&1",
       MIRAGE_BINARY, (dir / "events.json").string(), (dir / "report.json").string(),
       (dir / "viewer.log").string());
-  // The window is found by its title; every xdotool step is bounded, and Escape ends the run.
-  const std::string input =
-      "timeout 60 xdotool search --sync --name 'sphere-over-checker' windowfocus --sync "
-      "mousemove --window %1 120 90 sleep 0.3 keydown w sleep 1.0 keyup w sleep 0.3 key Escape";
+  // The window is found by its title once it is viewable; every xdotool step is bounded, and
+  // Escape ends the run. Focusing a window the server has created but not yet mapped fails
+  // (BadMatch from XSetInputFocus, which ends xdotool), so the focus is retried until it holds.
+  const std::string find = "xdotool search --sync --onlyvisible --name 'sphere-over-checker'";
+  const std::string input = fmt::format(
+      "timeout 60 sh -c \"until {0} windowfocus --sync; do sleep 0.2; done\" && "
+      "timeout 60 {0} mousemove --window %1 120 90 sleep 0.3 keydown w sleep 1.0 keyup w "
+      "sleep 0.3 key Escape",
+      find);
   const int status =
       std::system(fmt::format("({} & pid=$!; {} || kill $pid; wait $pid)", viewer, input).c_str());
   ASSERT_EQ(status, 0) << readFile((dir / "viewer.log").string());
