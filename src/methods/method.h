@@ -77,6 +77,10 @@ struct FrameContext {
   // reflector its own way.
   const std::vector<int>* own = nullptr;
   bool direct = true;
+  // The reflectors' depths are in the target already (method `ssr` draws them at their base
+  // colour before its fallback draws them its way): drawOwnReflectors then tests LEQUAL, so that
+  // the visible surface of each pixel passes again, and only it.
+  bool reflectors_in_depth = false;
 
   // Whether this method draws reflector `instance` in the eye view.
   bool owns(int instance) const {
@@ -88,10 +92,12 @@ struct FrameContext {
   }
   // This method's reflectors in the eye view, with `program`.
   void drawOwnReflectors(const gpu::Program& program) const {
+    if (reflectors_in_depth) glDepthFunc(GL_LEQUAL);
     if (own)
       passes.drawReflectorInstances(program, *own);
     else
       passes.drawReflectors(program);
+    if (reflectors_in_depth) glDepthFunc(GL_LESS);
   }
 
   void beginPart(gpu::Part part) const {

@@ -13,23 +13,22 @@ namespace mirage::shading {
 namespace {
 // The pyramid the march reads: level 0 the depth buffer padded to powers of two with 1
 // ("nothing"), each level above the minimum of the four cells below (its definition); beside it
-// the farthest drawn depths (0: nothing drawn), each level the maximum of the four below.
+// the behind limits of the farthest drawn depths (0: nothing drawn), each level the maximum of
+// the four below.
 struct CpuPyramid {
   std::vector<std::vector<float>> levels, far_levels;
   std::vector<ivec2> sizes;
-  float at(int level, int x, int y, bool far = false) const {
+  vec2 at(int level, int x, int y) const {
     const ivec2 s = sizes[size_t(level)];
-    if (x < 0 || y < 0 || x >= s.x || y >= s.y) return far ? 0.0f : 1.0f;
-    return (far ? far_levels : levels)[size_t(level)][size_t(y * s.x + x)];
+    if (x < 0 || y < 0 || x >= s.x || y >= s.y) return vec2(1.0f, 0.0f);
+    const size_t i = size_t(y * s.x + x);
+    return vec2(levels[size_t(level)][i], far_levels[size_t(level)][i]);
   }
 };
 CpuPyramid g_pyramid;
 }  // namespace
-inline float ssr_hiz(int level, int x, int y) {
+inline vec2 ssr_cell(int level, int x, int y) {
   return g_pyramid.at(level, x, y);
-}
-inline float ssr_hiz_far(int level, int x, int y) {
-  return g_pyramid.at(level, x, y, true);
 }
 }  // namespace mirage::shading
 
@@ -45,11 +44,20 @@ namespace sh = shading;
 
 constexpr float kNear = 0.1f, kFar = 100.0f, kThickness = 0.5f;
 
+// Level 0's behind limits: each drawn depth's window depth kThickness behind it, 0 where
+// nothing is drawn.
+std::vector<float> behindLimits(const std::vector<float>& padded) {
+  std::vector<float> out(padded.size());
+  for (size_t i = 0; i < padded.size(); ++i)
+    out[i] = sh::ssr_behind_limit(padded[i], kThickness, kNear, kFar);
+  return out;
+}
+
 sh::CpuPyramid buildPyramid(const std::vector<float>& depth, ivec2 size) {
   sh::CpuPyramid p;
   ivec2 s = HiZPyramid::paddedSize(size);
   p.levels.push_back(paddedDepth(depth, size, s));
-  p.far_levels.push_back(drawnDepth(p.levels.back()));
+  p.far_levels.push_back(behindLimits(p.levels.back()));
   p.sizes.push_back(s);
   while (s.x > 1 || s.y > 1) {
     const ivec2 below = s;
@@ -116,8 +124,8 @@ Hit bruteForce(vec3 from, vec3 to, const std::vector<float>& depth, ivec2 size,
       ++out.visited;
       const float za = from.z + t_entry * (to.z - from.z);
       const float zb = from.z + t_exit * (to.z - from.z);
-      if (sh::ssr_pixel_hit(za, zb, depth[size_t(cell.y * size.x + cell.x)], thickness, kNear,
-                            kFar)) {
+      const float at = depth[size_t(cell.y * size.x + cell.x)];
+      if (sh::ssr_pixel_hit(za, zb, at, sh::ssr_behind_limit(at, thickness, kNear, kFar))) {
         out.hit = true;
         out.pixel = cell;
         return out;
@@ -166,8 +174,7 @@ TEST(SsrMarch, FindsTheSamePixelAsAMarchOverEveryPixel) {
                     std::clamp(z0 + (ez - 0.4f) * 0.1f, 0.0f, 0.99999f));
       ivec2 pixel;
       int steps = 0;
-      const float t =
-          sh::ssr_march(from, to, levels, 1 << 20, kThickness, kNear, kFar, pixel, steps);
+      const float t = sh::ssr_march(from, to, levels, 1 << 20, pixel, steps);
       const Hit want = bruteForce(from, to, depth, size);
       ++rays;
       hits += want.hit;
@@ -212,25 +219,33 @@ TEST(SsrMarch, SkipsEmptyStretchesInFewSteps) {
   ivec2 pixel;
   int steps = 0;
   const float t = sh::ssr_march(vec3(3.5f, 3.5f, 0.5f), vec3(1020.0f, 500.0f, 0.6f),
-                                int(sh::g_pyramid.levels.size()), 1 << 20, kThickness, kNear, kFar,
-                                pixel, steps);
+                                int(sh::g_pyramid.levels.size()), 1 << 20, pixel, steps);
   EXPECT_LT(t, 0.0f);
   EXPECT_LT(steps, 64) << "cells visited over a 1,000-pixel empty ray";
 }
 
 TEST(SsrMarch, ThicknessLetsRaysPassBehindForegroundObjects) {
-  // View depth 1 at the surface; a ray entering 0.4 behind it hits with thickness 0.5, one 0.6
-  // behind does not; a ray crossing from the front always hits.
+  // The projection's window depth of a view depth, written out: the oracle of
+  // ssr_view_depth, ssr_window_depth and the behind limit.
   auto window = [](float view_depth) {
     return (kFar + kNear - 2.0f * kNear * kFar / view_depth) / (kFar - kNear) * 0.5f + 0.5f;
   };
+  for (float v : {0.2f, 1.0f, 7.5f, 60.0f}) {
+    EXPECT_NEAR(sh::ssr_view_depth(window(v), kNear, kFar), v, 1e-4f * v);
+    EXPECT_NEAR(sh::ssr_window_depth(v, kNear, kFar), window(v), 1e-6f);
+    EXPECT_NEAR(sh::ssr_behind_limit(window(v), kThickness, kNear, kFar), window(v + kThickness),
+                1e-6f);
+  }
+  EXPECT_EQ(sh::ssr_behind_limit(1.0f, kThickness, kNear, kFar), 0.0f);  // nothing drawn
+  // View depth 1 at the surface; a ray entering 0.4 behind it hits with thickness 0.5, one 0.6
+  // behind does not; a ray crossing from the front always hits.
   const float d = window(1.0f);
-  EXPECT_NEAR(sh::ssr_view_depth(d, kNear, kFar), 1.0f, 1e-4f);
-  EXPECT_TRUE(sh::ssr_pixel_hit(window(1.4f), window(1.5f), d, kThickness, kNear, kFar));
-  EXPECT_FALSE(sh::ssr_pixel_hit(window(1.6f), window(1.7f), d, kThickness, kNear, kFar));
-  EXPECT_TRUE(sh::ssr_pixel_hit(window(0.9f), window(3.0f), d, kThickness, kNear, kFar));
-  EXPECT_FALSE(sh::ssr_pixel_hit(window(0.5f), window(0.9f), d, kThickness, kNear, kFar));
-  EXPECT_FALSE(sh::ssr_pixel_hit(window(0.5f), window(3.0f), 1.0f, kThickness, kNear, kFar));
+  const float limit = sh::ssr_behind_limit(d, kThickness, kNear, kFar);
+  EXPECT_TRUE(sh::ssr_pixel_hit(window(1.4f), window(1.5f), d, limit));
+  EXPECT_FALSE(sh::ssr_pixel_hit(window(1.6f), window(1.7f), d, limit));
+  EXPECT_TRUE(sh::ssr_pixel_hit(window(0.9f), window(3.0f), d, limit));
+  EXPECT_FALSE(sh::ssr_pixel_hit(window(0.5f), window(0.9f), d, limit));
+  EXPECT_FALSE(sh::ssr_pixel_hit(window(0.5f), window(3.0f), 1.0f, 0.0f));
 }
 
 }  // namespace

@@ -39,24 +39,34 @@ TEST_F(SsrGpu, EachPyramidLevelIsTheMinimumAndTheFarthestDrawnOfTheFourBelow) {
   gpu::Texture texture = gpu::Texture::create2D(GL_DEPTH_COMPONENT32F, screen.x, screen.y);
   texture.upload(0, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
 
+  const HiZDepthRange range{0.5f, 0.1f, 100.0f};
   HiZPyramid pyramid;
-  pyramid.build(texture, screen);
+  pyramid.build(texture, screen, range);
   ASSERT_EQ(HiZPyramid::paddedSize(screen), ivec2(128, 64));
-  ASSERT_EQ(pyramid.levels(), 8);  // 128 -> 1, level 0 being the depth buffer's copy
-  // Level 0 is the depth buffer, texel for texel (the march reads it, not the attached depth).
-  ASSERT_EQ(readLevel(pyramid.levelZero(), 0, screen), depth);
+  ASSERT_EQ(pyramid.levels(), 8);  // 128 -> 1
 
-  // Level 0 as the march reads it: the depth buffer (rows as GL stores them, bottom first), 1
-  // past its edges.
+  // Level 0 is the depth buffer, texel for texel (the march reads it, not the attached depth;
+  // rows as GL stores them, bottom first), 1 past its edges; beside it each drawn depth's window
+  // depth 0.5 behind it in view depth (against the projection written out), 0 where none is.
   ivec2 below_size = HiZPyramid::paddedSize(screen);
-  std::vector<float> below = paddedDepth(depth, screen, below_size);
-  std::vector<float> below_far = drawnDepth(below);
-  ASSERT_EQ(readLevel(pyramid.levelZero(), 0, screen, GL_GREEN),
-            drawnDepth(std::vector<float>(depth)));
+  std::vector<float> below = readLevel(pyramid.texture(), 0, below_size);
+  std::vector<float> below_far = readLevel(pyramid.texture(), 0, below_size, GL_GREEN);
+  ASSERT_EQ(below, paddedDepth(depth, screen, below_size));
+  const float n = range.near_plane, f = range.far_plane;
+  for (size_t i = 0; i < below.size(); ++i) {
+    if (below[i] >= 1.0f) {
+      ASSERT_EQ(below_far[i], 0.0f) << "texel " << i;
+      continue;
+    }
+    const float view = 2.0f * n * f / ((f + n) - (2.0f * below[i] - 1.0f) * (f - n));
+    const float behind = view + range.thickness;
+    const float want = (f + n - 2.0f * n * f / behind) / (f - n) * 0.5f + 0.5f;
+    ASSERT_NEAR(below_far[i], want, 2e-6f) << "texel " << i << ", depth " << below[i];
+  }
   for (int level = 1; level < pyramid.levels(); ++level) {
     const ivec2 size = HiZPyramid::levelSize(screen, level);
-    const std::vector<float> here = readLevel(pyramid.texture(), level - 1, size);
-    const std::vector<float> here_far = readLevel(pyramid.texture(), level - 1, size, GL_GREEN);
+    const std::vector<float> here = readLevel(pyramid.texture(), level, size);
+    const std::vector<float> here_far = readLevel(pyramid.texture(), level, size, GL_GREEN);
     const std::vector<float> want = minLevelAbove(below, below_size, size);
     const std::vector<float> want_far = maxLevelAbove(below_far, below_size, size);
     for (int y = 0; y < size.y; ++y)

@@ -1,7 +1,7 @@
 // The pyramid as the ssr tests define it, on the CPU: level 0 the depth buffer padded to
 // `padded` with 1 ("nothing"), every level above the minimum of the up to four cells below; and
-// beside it the farthest drawn depths: level 0 the depth where drawn (< 1), else 0, every level
-// above the maximum of the cells below.
+// beside it the farthest drawn depths' behind limits (0 where none is drawn), every level above
+// the maximum of the cells below.
 #pragma once
 
 #include <algorithm>
@@ -44,14 +44,8 @@ inline std::vector<float> minLevelAbove(const std::vector<float>& below, ivec2 b
   return levelAbove(below, below_size, size, 1.0f, [](float a, float b) { return std::min(a, b); });
 }
 
-// The farthest-drawn level 0 of a padded depth buffer: d where d < 1, else 0.
-inline std::vector<float> drawnDepth(const std::vector<float>& padded) {
-  std::vector<float> out(padded.size());
-  for (size_t i = 0; i < padded.size(); ++i) out[i] = padded[i] < 1.0f ? padded[i] : 0.0f;
-  return out;
-}
-
-// The farthest drawn depths: the maximum of the cells below (0 where none is drawn).
+// The farthest drawn depths (their behind limits): the maximum of the cells below (0 where
+// none is drawn).
 inline std::vector<float> maxLevelAbove(const std::vector<float>& below, ivec2 below_size,
                                         ivec2 size) {
   return levelAbove(below, below_size, size, 0.0f, [](float a, float b) { return std::max(a, b); });

@@ -21,11 +21,7 @@
 #define MIRAGE_IMPOSTOR_RAYS 1        // reflected rays traced (one a bounce)
 #define MIRAGE_IMPOSTOR_PIXELS 2      // reflector pixels shaded
 #define MIRAGE_IMPOSTOR_COUNTS 3
-// The counts are kept in slots, each on a cache line of its own, a pixel adding to the slot of
-// its 64 x 64 tile: llvmpipe's threads shade different tiles, and atomics of two threads on one
-// line stall both. The frame's count is the slots' sum.
-#define MIRAGE_IMPOSTOR_COUNT_SLOTS 16
-#define MIRAGE_IMPOSTOR_SLOT_WORDS 16  // 64 bytes a slot
+// (kept in slots of gpu/counter_slots_shared.h)
 // The surface array holds every billboard's coverage in alpha, so that the alpha test is one
 // lookup whatever the kind: diffuse layers hold the colour (premultiplied by coverage),
 // reflective layers the world-space normal.

@@ -184,10 +184,7 @@ bool BillboardStage::beginFrame(FrameContext& frame, const gpu::Program& program
   }
   bind(program, frame.gpu);
   program.set("u_last_bounce_reflective", last_bounce_reflective ? 1 : 0);
-  const std::array<GLuint, MIRAGE_IMPOSTOR_COUNT_SLOTS * MIRAGE_IMPOSTOR_SLOT_WORDS> zeros{};
-  counts_.upload(std::span<const GLuint>(zeros));
-  counts_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_IMPOSTOR_COUNTS);
-  counted_ = true;
+  counts_.resetAndBind(MIRAGE_BIND_IMPOSTOR_COUNTS);
   return true;
 }
 
@@ -204,12 +201,7 @@ std::map<std::string, double> BillboardStage::stats() const {
   int diffuse = 0, reflective = 0;
   for (const BillboardSpec& b : set_.billboards)
     (b.kind == BillboardSpec::Kind::kReflective ? reflective : diffuse)++;
-  std::array<GLuint, MIRAGE_IMPOSTOR_COUNT_SLOTS * MIRAGE_IMPOSTOR_SLOT_WORDS> slots{};
-  if (counted_) counts_.download(slots.data(), sizeof(slots));
-  std::array<double, MIRAGE_IMPOSTOR_COUNTS> c{};
-  for (int s = 0; s < MIRAGE_IMPOSTOR_COUNT_SLOTS; ++s)
-    for (int k = 0; k < MIRAGE_IMPOSTOR_COUNTS; ++k)
-      c[size_t(k)] += double(slots[size_t(s * MIRAGE_IMPOSTOR_SLOT_WORDS + k)]);
+  const std::vector<double> c = counts_.sums();
   const double rays = double(c[MIRAGE_IMPOSTOR_RAYS]), pixels = double(c[MIRAGE_IMPOSTOR_PIXELS]);
   return {{"impostor_candidates_per_ray",
            rays > 0.0 ? double(c[MIRAGE_IMPOSTOR_CANDIDATES]) / rays : 0.0},

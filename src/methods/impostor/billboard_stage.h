@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "gpu/buffer.h"
+#include "gpu/counter_slots.h"
 #include "gpu/program.h"
 #include "gpu/texture.h"
 #include "methods/impostor/billboard_capture.h"
@@ -80,8 +81,7 @@ class BillboardStage {
   BillboardSet set_;
   gpu::Buffer billboards_, ranges_, entries_;
   // The trace's counts (impostor_counts.glsl), zeroed at each frame's start.
-  mutable gpu::Buffer counts_;
-  mutable bool counted_ = false;
+  mutable gpu::CounterSlots counts_{MIRAGE_IMPOSTOR_COUNTS};
   gpu::Texture environment_;
   std::unique_ptr<CubeCapture> cube_;
   bool env_valid_ = false;

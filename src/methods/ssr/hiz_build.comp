@@ -1,12 +1,12 @@
 // Method `ssr`: one level of the hierarchical-Z pyramid. Level 0 (u_copy) is the depth buffer
-// copied texel for texel into an rg32f image, which the march may read while the depth buffer is
-// attached for the depth test; every level above holds in r the minimum — the nearest depth — of
-// the up to four cells below it (1, "nothing", past the screen's edge: the pyramid is a power of
-// two a side) and in g the maximum of their drawn depths (the farthest surface; 0 where nothing
-// is drawn). The pyramid's texture holds levels 1 and up, its level i - 1 being the pyramid's
-// level i.
+// copied texel for texel, 1 ("nothing") past its edges up to the pyramid's power-of-two size:
+// the march reads it while the depth buffer is attached for the depth test. Each texel holds in
+// r the nearest depth and in g the behind limit of the farthest drawn surface
+// (ssr_depth_shared.h: the window depth `thickness` behind it; 0 where nothing is drawn); every
+// level above holds the minimum of r and the maximum of g of the up to four cells below.
 #include "render/shaders/common.glsl"
 #include "methods/ssr/ssr_shared.h"
+#include "methods/ssr/ssr_depth_shared.h"
 
 layout(local_size_x = MIRAGE_SSR_GROUP, local_size_y = MIRAGE_SSR_GROUP) in;
 
@@ -17,6 +17,9 @@ layout(binding = MIRAGE_IMAGE_SSR_LEVEL_OUT, rg32f) uniform writeonly image2D u_
 uniform ivec2 u_out_size;  // the level written
 uniform ivec2 u_in_size;   // the level below (level 0: the screen's size)
 uniform int u_copy;        // 1: write level 0, the depth buffer's copy
+uniform float u_thickness;  // view-depth units
+uniform float u_near;
+uniform float u_far;
 
 vec2 below(ivec2 at) {
   if (at.x >= u_in_size.x || at.y >= u_in_size.y) return vec2(1.0f, 0.0f);
@@ -27,8 +30,9 @@ void main() {
   ivec2 at = ivec2(gl_GlobalInvocationID.xy);
   if (at.x >= u_out_size.x || at.y >= u_out_size.y) return;
   if (u_copy != 0) {
-    float d = texelFetch(u_depth, at, 0).r;
-    imageStore(u_out, at, vec4(d, d < 1.0f ? d : 0.0f, 0.0f, 0.0f));
+    bool inside = at.x < u_in_size.x && at.y < u_in_size.y;
+    float d = inside ? texelFetch(u_depth, at, 0).r : 1.0f;
+    imageStore(u_out, at, vec4(d, ssr_behind_limit(d, u_thickness, u_near, u_far), 0.0f, 0.0f));
     return;
   }
   vec2 a = below(2 * at), b = below(2 * at + ivec2(1, 0));

@@ -18,35 +18,30 @@ ivec2 HiZPyramid::levelSize(ivec2 screen, int level) {
   return glm::max(paddedSize(screen) >> level, ivec2(1));
 }
 
-void HiZPyramid::build(const gpu::Texture& depth, ivec2 screen) {
+void HiZPyramid::build(const gpu::Texture& depth, ivec2 screen, const HiZDepthRange& range) {
   const ivec2 padded = paddedSize(screen);
   const int levels = gpu::Texture::fullMipLevels(std::max(padded.x, padded.y));
-  if (screen != screen_ || level_zero_.id() == 0) {
-    level_zero_ = gpu::Texture::create2D(GL_RG32F, screen.x, screen.y);
-    level_zero_.setFilter(GL_NEAREST, GL_NEAREST);
-    texture_ = {};
-    if (levels > 1) {  // a 1x1 screen: level 0 is the whole pyramid
-      const ivec2 first = levelSize(screen, 1);
-      texture_ = gpu::Texture::create2D(GL_RG32F, first.x, first.y, levels - 1);
-      texture_.setFilter(GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST);
-    }
+  if (screen != screen_ || texture_.id() == 0) {
+    texture_ = gpu::Texture::create2D(GL_RG32F, padded.x, padded.y, levels);
+    texture_.setFilter(GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST);
     screen_ = screen;
   }
   program_.use();
+  program_.set("u_thickness", range.thickness);
+  program_.set("u_near", range.near_plane);
+  program_.set("u_far", range.far_plane);
   depth.bind(MIRAGE_UNIT_SSR_DEPTH);
   ivec2 below = screen;
   for (int level = 0; level < levels; ++level) {
-    const ivec2 size = level == 0 ? screen : levelSize(screen, level);
+    const ivec2 size = levelSize(screen, level);
     program_.set("u_out_size", size);
     program_.set("u_in_size", below);
     program_.set("u_copy", level == 0 ? 1 : 0);
-    const GLuint in = level <= 1 ? level_zero_.id() : texture_.id();
-    const GLuint out = level == 0 ? level_zero_.id() : texture_.id();
     if (level > 0)
-      glBindImageTexture(MIRAGE_IMAGE_SSR_LEVEL_IN, in, std::max(level - 2, 0), GL_FALSE, 0,
+      glBindImageTexture(MIRAGE_IMAGE_SSR_LEVEL_IN, texture_.id(), level - 1, GL_FALSE, 0,
                          GL_READ_ONLY, GL_RG32F);
-    glBindImageTexture(MIRAGE_IMAGE_SSR_LEVEL_OUT, out, std::max(level - 1, 0), GL_FALSE, 0,
-                       GL_WRITE_ONLY, GL_RG32F);
+    glBindImageTexture(MIRAGE_IMAGE_SSR_LEVEL_OUT, texture_.id(), level, GL_FALSE, 0, GL_WRITE_ONLY,
+                       GL_RG32F);
     glDispatchCompute(GLuint((size.x + MIRAGE_SSR_GROUP - 1) / MIRAGE_SSR_GROUP),
                       GLuint((size.y + MIRAGE_SSR_GROUP - 1) / MIRAGE_SSR_GROUP), 1);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);

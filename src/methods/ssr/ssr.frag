@@ -9,34 +9,27 @@ layout(early_fragment_tests) in;  // count only the pixels that are shown
 #define MIRAGE_REFLECTION_COVERAGE 1
 #include "render/shaders/reflector.glsl"
 #include "methods/ssr/ssr_shared.h"
+#include "render/shaders/counter_slots.glsl"
 
 layout(binding = MIRAGE_UNIT_SSR_HIZ) uniform sampler2D u_hiz;
 layout(binding = MIRAGE_UNIT_SSR_COLOR) uniform sampler2D u_color;
 layout(binding = MIRAGE_UNIT_SSR_NORMAL) uniform sampler2D u_normal;
 layout(std430, binding = MIRAGE_BIND_SSR_COUNTS) buffer SsrCounts {
-  uint ssr_counts[MIRAGE_SSR_COUNTS];
+  uint ssr_counts[MIRAGE_COUNTER_SLOTS * MIRAGE_COUNTER_SLOT_WORDS];
 };
 
 uniform ivec2 u_size;       // the screen in pixels
 uniform int u_levels;       // levels of the pyramid
 uniform int u_max_steps;    // --ssr-steps
-uniform float u_thickness;  // --ssr-thickness, in view-depth units
 uniform float u_edge_fade;  // --ssr-edge-fade: the fade's width, a fraction of the shorter side
 uniform float u_near;
 uniform float u_far;
 uniform vec3 u_forward;  // the view direction (world)
 
-layout(binding = MIRAGE_UNIT_SSR_DEPTH) uniform sampler2D u_depth;
-
-// Level 0 is the depth buffer's copy (nothing past its edges), levels 1 and up the pyramid's
-// texture: r the nearest depth, g the farthest drawn.
-vec2 ssr_cell(int level, int x, int y) {
-  if (level > 0) return texelFetch(u_hiz, ivec2(x, y), level - 1).rg;
-  if (x < 0 || y < 0 || x >= u_size.x || y >= u_size.y) return vec2(1.0f, 0.0f);
-  return texelFetch(u_depth, ivec2(x, y), 0).rg;
-}
-float ssr_hiz(int level, int x, int y) { return ssr_cell(level, x, y).r; }
-float ssr_hiz_far(int level, int x, int y) { return ssr_cell(level, x, y).g; }
+// The pyramid, level 0 the depth buffer's copy (hiz_pyramid.h): r the nearest depth, g the
+// behind limit of the farthest drawn. The march never leaves the padded pyramid: its ray is
+// clipped to the screen.
+vec2 ssr_cell(int level, int x, int y) { return texelFetch(u_hiz, ivec2(x, y), level).rg; }
 
 #include "methods/ssr/ssr_march_shared.h"
 
@@ -55,9 +48,9 @@ vec3 to_world(vec3 window) {
   return world.xyz / world.w;
 }
 
-// One atomic a pixel (and one more in the fade): the pixel count and the fallback's whole
-// pixels are sums of these on the CPU.
-void count(int which) { atomicAdd(ssr_counts[which], 1u); }
+// One atomic a pixel (and one more in the fade), into the pixel's slot (counter_slots.glsl): the
+// pixel count and the fallback's whole pixels are sums of these on the CPU.
+void count(int which) { atomicAdd(ssr_counts[counter_slot() + which], 1u); }
 
 vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflector) {
   g_coverage = 0.0f;
@@ -82,8 +75,8 @@ vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflecto
 
   ivec2 pixel;
   int steps;
-  float t = ssr_march(from, to, u_levels, u_max_steps, u_thickness, u_near, u_far, pixel, steps);
-  atomicAdd(ssr_counts[MIRAGE_SSR_STEPS], uint(steps));
+  float t = ssr_march(from, to, u_levels, u_max_steps, pixel, steps);
+  atomicAdd(ssr_counts[counter_slot() + MIRAGE_SSR_STEPS], uint(steps));
   if (t < 0.0f) {
     if (steps >= u_max_steps)
       count(MIRAGE_SSR_OUT_OF_STEPS);
@@ -104,7 +97,8 @@ vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflecto
       count(MIRAGE_SSR_HITS);
     } else {
       count(MIRAGE_SSR_FADED);
-      atomicAdd(ssr_counts[MIRAGE_SSR_FADED_WEIGHT], uint((1.0f - g_coverage) * 1024.0f + 0.5f));
+      atomicAdd(ssr_counts[counter_slot() + MIRAGE_SSR_FADED_WEIGHT],
+                uint((1.0f - g_coverage) * 1024.0f + 0.5f));
     }
     vec3 hit = to_world(vec3(at.xy, ssr_bilinear_depth(at.xy, u_size)));
     return vec4(textureLod(u_color, at.xy / vec2(u_size), 0.0f).rgb, length(hit - position));

@@ -1,10 +1,10 @@
 // Method `ssr`: the reflected ray's march through the hierarchical-Z pyramid of the depth
 // buffer, shared by the reflection shader and the tests (which run it against a brute-force
 // march over every pixel). The includer defines, before including this file:
-//   float ssr_hiz(int level, int x, int y);      // the nearest window depth of cell (x, y) of
-//                                                // `level` (level 0: the depth buffer; 1: none)
-//   float ssr_hiz_far(int level, int x, int y);  // the farthest depth drawn there (< 1), 0 when
-//                                                // nothing is drawn
+//   vec2 ssr_cell(int level, int x, int y);  // cell (x, y) of `level` (level 0: the depth
+//                                            // buffer): x its nearest window depth (1: nothing
+//                                            // drawn), y the behind limit of its farthest drawn
+//                                            // depth (ssr_depth_shared.h; 0: nothing drawn)
 //
 // The ray is a segment in screen space: x, y in window pixels (bottom-left origin, as
 // gl_FragCoord and the pyramid's texels), z the window depth, which is affine in screen space along
@@ -15,45 +15,22 @@
 // passes behind everything there): nothing in it can be hit, and the march climbs a level;
 // otherwise it descends, down to single pixels, where the hit test is made. It finds the first
 // pixel along the ray that passes that test — the same pixel a march over every pixel finds — in
-// O(log) steps over empty stretches.
+// O(log) steps over empty stretches. A step reads one texel and makes no division (llvmpipe runs
+// every lane of a step for as long as any lane of its group marches).
 #ifndef MIRAGE_METHODS_SSR_SSR_MARCH_SHARED_H
 #define MIRAGE_METHODS_SSR_SSR_MARCH_SHARED_H
 
-#include "shading/glsl_compat.h"
+#include "methods/ssr/ssr_depth_shared.h"
 
 SHARED_BEGIN
 
-// View depth (distance along the view axis) of window depth `z` under a perspective projection
-// with planes `near_plane`, `far_plane` (OpenGL clip space, depth range 0..1).
-SHARED_FN float ssr_view_depth(float z, float near_plane, float far_plane) {
-  float ndc = 2.0f * z - 1.0f;
-  return 2.0f * near_plane * far_plane /
-         ((far_plane + near_plane) - ndc * (far_plane - near_plane));
-}
-
 // The pixel test: the ray crosses pixel `p` with window depth za on entry and zb on exit, the
-// depth buffer holds d there. A hit when the ray reaches the surface inside the pixel: it
-// enters in front and leaves behind (crossing it), or enters behind by no more than
-// `thickness` (view-depth units) — a surface is taken to be that thick, so that a ray passing
-// far behind a foreground object is not stopped by it. d >= 1: nothing drawn there.
-SHARED_FN bool ssr_pixel_hit(float za, float zb, float d, float thickness, float near_plane,
-                             float far_plane) {
-  if (d >= 1.0f || max(za, zb) < d) return false;
-  if (za <= d) return true;
-  return ssr_view_depth(za, near_plane, far_plane) - ssr_view_depth(d, near_plane, far_plane) <=
-         thickness;
-}
-
-// A cell whose drawn depths are at most `farthest` (0: none drawn) cannot be hit by a ray whose
-// nearest window depth in it is `z` when the ray is behind all of them by more than the
-// thickness: every pixel fails ssr_pixel_hit (it enters behind, beyond the thickness), since
-// view depth grows with window depth. The skip is exact: the march still finds the first pixel
-// that passes the test.
-SHARED_FN bool ssr_behind_all(float z, float farthest, float thickness, float near_plane,
-                              float far_plane) {
-  return z > farthest && ssr_view_depth(z, near_plane, far_plane) -
-                                 ssr_view_depth(farthest, near_plane, far_plane) >
-                             thickness;
+// depth buffer holds d there and `limit` is d's behind limit (ssr_behind_limit). A hit when the
+// ray reaches the surface inside the pixel: it enters in front and leaves behind (crossing it),
+// or enters behind by no more than the thickness — a surface is taken to be that thick, so that
+// a ray passing far behind a foreground object is not stopped by it. d >= 1: nothing drawn.
+SHARED_FN bool ssr_pixel_hit(float za, float zb, float d, float limit) {
+  return d < 1.0f && max(za, zb) >= d && za <= limit;
 }
 
 // The parameter along from -> to where the ray leaves the cell of size `cell` holding the point
@@ -79,9 +56,14 @@ SHARED_FN float ssr_nudge(vec3 from, vec3 to) {
 // pyramid of `levels` levels. Returns the parameter of the hit pixel's entry point (>= 0) or -1
 // (no hit before `to`, or more than `max_steps` cells visited); `hit_pixel` receives the hit
 // pixel, `steps` the cells visited. The reflecting pixel itself is never tested.
-SHARED_FN float ssr_march(vec3 from, vec3 to, int levels, int max_steps, float thickness,
-                          float near_plane, float far_plane, SHARED_OUT(ivec2) hit_pixel,
-                          SHARED_OUT(int) steps) {
+SHARED_FN float ssr_march(vec3 from, vec3 to, int levels, int max_steps,
+                          SHARED_OUT(ivec2) hit_pixel, SHARED_OUT(int) steps) {
+  vec3 d = to - from;
+  // A cell's exit along each axis is (its far edge - from) / d: the edge is cell * (c + ahead),
+  // and an axis the ray does not move along never ends it (its parameter 2, past the end).
+  vec2 ahead = vec2(d.x > 0.0f ? 1.0f : 0.0f, d.y > 0.0f ? 1.0f : 0.0f);
+  vec2 inv = vec2(d.x != 0.0f ? 1.0f / d.x : 0.0f, d.y != 0.0f ? 1.0f / d.y : 0.0f);
+  vec2 offset = vec2(d.x != 0.0f ? -from.x * inv.x : 2.0f, d.y != 0.0f ? -from.y * inv.y : 2.0f);
   float nudge = ssr_nudge(from, to);
   float t = ssr_cell_exit(from, to, 0.0f, 1.0f) + nudge;
   int level = 0;
@@ -90,22 +72,22 @@ SHARED_FN float ssr_march(vec3 from, vec3 to, int levels, int max_steps, float t
   while (t < 1.0f && steps < max_steps) {
     steps += 1;
     float cell = float(1 << level);
-    float exit_t = ssr_cell_exit(from, to, t, cell);
-    vec3 p = from + t * (to - from);
-    ivec2 c = ivec2(floor(vec2(p.x, p.y) / cell));
-    float za = p.z;
-    float zb = from.z + exit_t * (to.z - from.z);
-    float nearest = ssr_hiz(level, c.x, c.y);
-    if (max(za, zb) < nearest || ssr_behind_all(min(za, zb), ssr_hiz_far(level, c.x, c.y),
-                                                thickness, near_plane, far_plane)) {
-      // Nothing in this cell is as near as the ray gets, or the ray passes behind all of it:
-      // skip it and try a coarser cell.
+    vec2 corner = floor((vec2(from.x, from.y) + t * vec2(d.x, d.y)) * (1.0f / cell));
+    vec2 exits = (corner + ahead) * cell * inv + offset;
+    float exit_t = max(min(min(exits.x, exits.y), 1.0f), t);
+    ivec2 c = ivec2(corner);
+    float za = from.z + t * d.z;
+    float zb = from.z + exit_t * d.z;
+    vec2 here = ssr_cell(level, c.x, c.y);
+    if (max(za, zb) < here.x || min(za, zb) > here.y) {
+      // Nothing in this cell is as near as the ray gets, or the ray passes behind all of it by
+      // more than the thickness: skip it and try a coarser cell.
       t = exit_t + nudge;
       if (level + 1 < levels) level += 1;
     } else if (level > 0) {
       level -= 1;
     } else {
-      if (ssr_pixel_hit(za, zb, nearest, thickness, near_plane, far_plane)) {
+      if (ssr_pixel_hit(za, zb, here.x, here.y)) {
         hit_pixel = c;
         return t;
       }
@@ -125,8 +107,8 @@ SHARED_FN float ssr_bilinear_depth(vec2 p, ivec2 size) {
   vec2 f = q - base;
   int x0 = clamp(int(base.x), 0, size.x - 1), x1 = clamp(int(base.x) + 1, 0, size.x - 1);
   int y0 = clamp(int(base.y), 0, size.y - 1), y1 = clamp(int(base.y) + 1, 0, size.y - 1);
-  float a = ssr_hiz(0, x0, y0), b = ssr_hiz(0, x1, y0);
-  float c = ssr_hiz(0, x0, y1), d = ssr_hiz(0, x1, y1);
+  float a = ssr_cell(0, x0, y0).x, b = ssr_cell(0, x1, y0).x;
+  float c = ssr_cell(0, x0, y1).x, d = ssr_cell(0, x1, y1).x;
   return mix(mix(a, b, f.x), mix(c, d, f.x), f.y);
 }
 

@@ -3,52 +3,59 @@
 #include <array>
 #include <cmath>
 
-#include "gpu/buffer.h"
+#include "gpu/counter_slots.h"
 #include "gpu/framebuffer.h"
 #include "methods/probe_params.h"
 #include "methods/recapture_params.h"
 #include "methods/ssr/hiz_pyramid.h"
 #include "methods/ssr/ssr_shared.h"
+#include "render/frame_target.h"
 
 namespace mirage {
 
 namespace {
 
-// The direct view as the G-buffer pass draws it: colour (reflectors at their base colour),
-// reflector ids and normals facing the viewer (w: reflector mask). Its depth is the frame's
-// own, which the fallback's frame has just written (the same triangles through the same
-// invariant vertex stage): drawn with the depth test EQUAL and no depth writes, only the
-// visible surface of each pixel is shaded, and the pyramid is built from that depth directly.
+// What the march reads beside the pyramid: the direct view's colour with the reflectors at their
+// base colour (a hit on a reflector shows what order 1 shows there), and normals facing the
+// viewer (w: reflector mask). They are drawn first, straight into the frame with the normals
+// beside (`direct`: what method `none` draws); the frame's colour is copied for the march, and
+// the fallback then draws the reflectors its way over their base colour.
 struct GBuffer {
-  GBuffer(ivec2 s, const gpu::Texture& frame_depth) : size(s), depth_id(frame_depth.id()) {
-    color = gpu::Texture::create2D(GL_RGBA16F, s.x, s.y);
-    ids = gpu::Texture::create2D(GL_R32UI, s.x, s.y);
+  GBuffer(ivec2 s, const FrameTarget& target)
+      : size(s), depth_id(target.depth().id()), color_id(target.color().id()) {
+    color = gpu::Texture::create2D(GL_RGBA32F, s.x, s.y);  // the frame's format: copied from it
     normal = gpu::Texture::create2D(GL_RGBA16F, s.x, s.y);
-    for (gpu::Texture* t : {&ids, &normal}) t->setFilter(GL_NEAREST, GL_NEAREST);
+    normal.setFilter(GL_NEAREST, GL_NEAREST);
     color.setFilter(GL_LINEAR, GL_LINEAR);  // read at the refined hit, between pixel centres
-    fbo.attachColor(0, color);
-    fbo.attachColor(1, ids);
-    fbo.attachColor(2, normal);
-    fbo.attachDepth(frame_depth);
-    fbo.setDrawBuffers(3);
-    fbo.checkComplete("ssr G-buffer");
+    direct.attachColor(0, target.color());
+    direct.attachColor(1, target.ids());
+    direct.attachColor(2, normal);
+    direct.attachDepth(target.depth());
+    direct.setDrawBuffers(3);
+    direct.checkComplete("ssr direct view");
   }
-  bool fits(ivec2 s, const gpu::Texture& frame_depth) const {
-    return size == s && depth_id == frame_depth.id();
-  }
-  void bindAndClear() const {
-    fbo.bind();
-    glViewport(0, 0, size.x, size.y);
-    const float zero[4] = {0, 0, 0, 0};
-    const GLuint zero_id[4] = {0, 0, 0, 0};
-    glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, zero);
-    glClearNamedFramebufferuiv(fbo.id(), GL_COLOR, 1, zero_id);
-    glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 2, zero);
+  bool fits(ivec2 s, const FrameTarget& target) const {
+    return size == s && depth_id == target.depth().id() && color_id == target.color().id();
   }
   ivec2 size;
-  GLuint depth_id;
-  gpu::Texture color, ids, normal;
-  gpu::Framebuffer fbo;
+  GLuint depth_id, color_id;
+  gpu::Texture color, normal;
+  gpu::Framebuffer direct;
+};
+
+// Draws with the depth test EQUAL and no depth writes while it lives: the surfaces already in
+// the depth buffer, again.
+struct DepthEqual {
+  DepthEqual() {
+    glDepthFunc(GL_EQUAL);
+    glDepthMask(GL_FALSE);
+  }
+  ~DepthEqual() {
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+  }
+  DepthEqual(const DepthEqual&) = delete;
+  DepthEqual& operator=(const DepthEqual&) = delete;
 };
 
 class SsrMethod final : public Method {
@@ -72,42 +79,38 @@ class SsrMethod final : public Method {
     const MethodEntry& fallback = findMethod(fallback_name_);
     fallback_ = fallback.create(
         MethodSetup{fallback.info, setup.gpu, setup.passes, setup.params, setup.settings});
-    counts_.upload(std::span<const GLuint>(zeros_));
   }
 
   void update(FrameContext& frame) override { fallback_->update(frame); }
 
   void render(FrameContext& frame) override {
-    // The fallback's frame first: the direct part, and the reflectors as its probes show them.
-    fallback_->render(frame);
-    if (frame.settings.order == 0) return;
     const ivec2 size = frame.view.size();
-    const gpu::Texture& depth = frame.target.depth();
-    if (!gbuffer_ || !gbuffer_->fits(size, depth))
-      gbuffer_ = std::make_unique<GBuffer>(size, depth);
-
-    gbuffer_->bindAndClear();
+    if (!gbuffer_ || !gbuffer_->fits(size, frame.target))
+      gbuffer_ = std::make_unique<GBuffer>(size, frame.target);
+    drawGBuffer(frame);
+    if (frame.settings.order > 0)
+      glCopyImageSubData(frame.target.color().id(), GL_TEXTURE_2D, 0, 0, 0, 0, gbuffer_->color.id(),
+                         GL_TEXTURE_2D, 0, 0, 0, 0, size.x, size.y, 1);
+    // The fallback's reflectors over their base colour: what shows where the screen has no data.
+    FrameContext fallback_frame = frame;
+    fallback_frame.direct = false;
+    fallback_frame.reflectors_in_depth = true;
+    frame.target.bind();
     frame.passes.begin(frame.view, frame.settings);
-    glDepthFunc(GL_EQUAL);
-    glDepthMask(GL_FALSE);
-    frame.passes.drawDiffuseWith(gbuffer_diffuse_);
-    frame.passes.drawReflectors(gbuffer_reflector_);
-    glDepthMask(GL_TRUE);
-    glDepthFunc(GL_LESS);
-    hiz_.build(depth, size);
+    fallback_->render(fallback_frame);
+    if (frame.settings.order == 0) return;
+    hiz_.build(frame.target.depth(), size,
+               HiZDepthRange{thickness_, frame.view.nearPlane(), frame.view.farPlane()});
 
     frame.target.bind();
     frame.passes.begin(frame.view, frame.settings);
     hiz_.texture().bind(MIRAGE_UNIT_SSR_HIZ);
-    hiz_.levelZero().bind(MIRAGE_UNIT_SSR_DEPTH);  // not `depth`: it is attached (hiz_pyramid.h)
     gbuffer_->color.bind(MIRAGE_UNIT_SSR_COLOR);
     gbuffer_->normal.bind(MIRAGE_UNIT_SSR_NORMAL);
-    counts_.upload(std::span<const GLuint>(zeros_));
-    counts_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_SSR_COUNTS);
+    counts_.resetAndBind(MIRAGE_BIND_SSR_COUNTS);
     program_.set("u_size", size);
     program_.set("u_levels", hiz_.levels());
     program_.set("u_max_steps", max_steps_);
-    program_.set("u_thickness", thickness_);
     program_.set("u_edge_fade", edge_fade_);
     program_.set("u_near", frame.view.nearPlane());
     program_.set("u_far", frame.view.farPlane());
@@ -131,11 +134,28 @@ class SsrMethod final : public Method {
 
   int orderRendered(int requested) const override { return std::min(requested, 1); }
 
+  // The direct part and the reflectors at their base colour into the frame, with the normals
+  // beside. Inside `mixed` the frame holds the direct part already (frame.direct false): then
+  // the diffuse surfaces there are drawn again for their normals, the same colour over the same.
+  void drawGBuffer(FrameContext& frame) const {
+    if (frame.direct) frame.passes.drawBackground();
+    gbuffer_->direct.bind();
+    frame.passes.begin(frame.view, frame.settings);
+    const float zero[4] = {0, 0, 0, 0};
+    glClearNamedFramebufferfv(gbuffer_->direct.id(), GL_COLOR, 2, zero);
+    if (frame.direct) {
+      frame.passes.drawDiffuseWith(gbuffer_diffuse_);
+    } else {
+      DepthEqual equal;
+      frame.passes.drawDiffuseWith(gbuffer_diffuse_);
+    }
+    frame.drawOwnReflectors(gbuffer_reflector_);  // inside `mixed`, the others draw theirs
+  }
+
   std::map<std::string, double> stats() const override {
     std::map<std::string, double> s = fallback_->stats();
     if (!counted_) return s;
-    std::array<GLuint, MIRAGE_SSR_COUNTS> c{};
-    counts_.download(c.data(), sizeof(c));
+    const std::vector<double> c = counts_.sums();
     double pixels = 0.0;
     for (int k = 0; k < MIRAGE_SSR_OUTCOMES; ++k) pixels += double(c[size_t(k)]);
     const double share = pixels > 0 ? 1.0 / pixels : 0.0;
@@ -162,8 +182,7 @@ class SsrMethod final : public Method {
   std::unique_ptr<Method> fallback_;
   std::unique_ptr<GBuffer> gbuffer_;
   HiZPyramid hiz_;
-  gpu::Buffer counts_;
-  std::array<GLuint, MIRAGE_SSR_COUNTS> zeros_{};
+  gpu::CounterSlots counts_{MIRAGE_SSR_COUNTS};
   bool counted_ = false;
 };
 
