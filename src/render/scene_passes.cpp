@@ -42,7 +42,11 @@ void ScenePasses::begin(const View& view, const FrameSettings& settings) {
 }
 
 void ScenePasses::drawBackground() const {
-  background_.use();
+  drawFullscreen(background_);
+}
+
+void ScenePasses::drawFullscreen(const gpu::Program& program) const {
+  program.use();
   glDepthMask(GL_FALSE);
   glDisable(GL_DEPTH_TEST);
   glBindVertexArray(empty_vao_.id());

@@ -29,6 +29,9 @@ class ScenePasses {
 
   // The environment seen directly (level 0, as the ray tracer samples it).
   void drawBackground() const;
+  // One triangle over the viewport with `program` (fullscreen.vert), without the depth test: a
+  // screen-space pass.
+  void drawFullscreen(const gpu::Program& program) const;
   // All diffuse instances except `exclude`.
   void drawDiffuse(int exclude = -1) const;
   // The same with another program (a G-buffer pass).

@@ -92,6 +92,28 @@ TEST_F(MixedMethod, EveryReflectorShowsWhatItsOwnMethodDrawsAlone) {
   }
 }
 
+// `ssr` shades its reflectors in a screen-space pass over the G-buffer: inside a composite it
+// touches only the pixels of its own reflectors (those its G-buffer names), never another
+// method's, though its pass covers the whole viewport.
+TEST_F(MixedMethod, ScreenSpaceReflectionsTouchOnlyTheirOwnReflectors) {
+  const Scene scene = makeBuiltinScene("gallery");
+  FrameRenderer renderer(scene, {180, 128});
+  const std::vector<uint32_t> walls = {1, 2}, curved = {3, 4, 5}, direct = {0};
+  const RenderedFrame planar = renderOnce(renderer, "planar", {{"planar-curved", "probes"}});
+  // Either way round: whichever of the two draws first.
+  for (const bool ssr_on_walls : {false, true}) {
+    SCOPED_TRACE(ssr_on_walls ? "ssr on the walls" : "ssr on the curved reflectors");
+    const std::string assign = ssr_on_walls ? "mirror-back,mirror-left=ssr;*=planar"
+                                            : "mirror-back,mirror-left=planar;*=ssr";
+    const RenderedFrame mixed = renderOnce(renderer, "mixed", {{"assign", assign}});
+    const std::vector<uint32_t>& by_planar = ssr_on_walls ? curved : walls;
+    const std::vector<uint32_t>& by_ssr = ssr_on_walls ? walls : curved;
+    EXPECT_EQ(differing(mixed, planar, by_planar), 0u);
+    EXPECT_EQ(differing(mixed, planar, direct), 0u);
+    EXPECT_GT(differing(mixed, planar, by_ssr), 100u);  // ssr drew those
+  }
+}
+
 TEST_F(MixedMethod, ATimedFrameGivesEachEntrysTime) {
   const Scene scene = makeBuiltinScene("gallery");
   FrameRenderer renderer(scene, {96, 64});

@@ -1,15 +1,17 @@
-// Method `ssr`: screen-space reflections. Each reflector pixel marches its reflected ray through
-// the hierarchical-Z pyramid of the direct view's depth (ssr_march_shared.h) and, where it hits
-// a surface seen from its front, shows the direct view's colour there; its weight fades to 0
-// near the screen's edges. Rays that leave the screen, hit nothing, hit a back face or run out
-// of steps get weight 0. The result is blended over the fallback method's frame by that weight
-// (render/shaders/reflector.glsl, MIRAGE_REFLECTION_COVERAGE).
-layout(early_fragment_tests) in;  // count only the pixels that are shown
-
-#define MIRAGE_REFLECTION_COVERAGE 1
-#include "render/shaders/reflector.glsl"
+// Method `ssr`: screen-space reflections, a screen-space pass over the reflector pixels of the
+// frame's G-buffer (one triangle over the viewport; the reflectors are not drawn again). Each
+// reflector pixel's point comes from the depth buffer and its normal and material from the
+// G-buffer; its reflected ray marches the hierarchical-Z pyramid of the direct view's depth
+// (ssr_march_shared.h) and, where it hits a surface seen from its front, shows the direct
+// view's colour there; its weight fades to 0 near the screen's edges. Rays that leave the
+// screen, hit nothing, hit a back face or run out of steps get weight 0. The pixel, shaded with
+// the shared model, is blended over the fallback's by that weight (alpha; the blend keeps the
+// frame's alpha, the eye distance).
+#include "render/shaders/common.glsl"
 #include "methods/ssr/ssr_shared.h"
 #include "render/shaders/counter_slots.glsl"
+
+layout(location = 0) out vec4 out_color;
 
 layout(binding = MIRAGE_UNIT_SSR_HIZ) uniform sampler2D u_hiz;
 layout(binding = MIRAGE_UNIT_SSR_COLOR) uniform sampler2D u_color;
@@ -33,8 +35,7 @@ vec2 ssr_cell(int level, int x, int y) { return texelFetch(u_hiz, ivec2(x, y), l
 
 #include "methods/ssr/ssr_march_shared.h"
 
-float g_coverage = 0.0f;
-float reflection_coverage() { return g_coverage; }
+float g_coverage = 0.0f;  // the weight of the screen's reflection at this pixel
 
 vec3 to_window(vec3 world) {
   vec4 clip = frame.view_proj * vec4(world, 1.0f);
@@ -52,7 +53,9 @@ vec3 to_world(vec3 window) {
 // pixel count and the fallback's whole pixels are sums of these on the CPU.
 void count(int which) { atomicAdd(ssr_counts[counter_slot() + which], 1u); }
 
-vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflector) {
+// The radiance along the reflected ray from the pixel at `from` (window coordinates; `position` in
+// the world) and the hit's distance; g_coverage its weight.
+vec4 reflected_radiance(vec3 from, vec3 position, vec3 direction) {
   g_coverage = 0.0f;
   // The ray in the world, cut where it would cross the near plane (towards the eye) or pass
   // the far plane, then projected and cut at the screen's edges.
@@ -61,7 +64,6 @@ vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflecto
   float length_max = 2.0f * u_far;
   if (rate < 0.0f) length_max = min(length_max, (depth0 - 1.001f * u_near) / -rate);
   if (rate > 0.0f) length_max = min(length_max, (0.999f * u_far - depth0) / rate);
-  vec3 from = gl_FragCoord.xyz;
   vec3 to = to_window(position + max(length_max, 0.0f) * direction);
   vec2 d = to.xy - from.xy;
   float t_screen = 1.0f;
@@ -104,4 +106,19 @@ vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflecto
     return vec4(textureLod(u_color, at.xy / vec2(u_size), 0.0f).rgb, length(hit - position));
   }
   return vec4(0.0f, 0.0f, 0.0f, MISS_DISTANCE);
+}
+
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  vec4 g = texelFetch(u_normal, pixel, 0);
+  if (g.w < 0.5f) discard;  // not one of this method's reflectors
+  MaterialData m = materials[int(g.w + 0.5f) - 1];
+  vec3 window = vec3(gl_FragCoord.xy, texelFetch(u_hiz, pixel, 0).r);
+  vec3 p = to_world(window);
+  vec3 n = normalize(g.xyz);
+  vec3 to_viewer = normalize(frame.eye.xyz - p);
+  vec4 reflected = reflected_radiance(window, p, reflect_direction(-to_viewer, n));
+  if (g_coverage <= 0.0f) discard;  // the fallback's pixel stays
+  float cos_theta = max(dot(n, to_viewer), 0.0f);
+  out_color = vec4(shade_reflector(m, cos_theta, reflected.a, reflected.rgb), g_coverage);
 }

@@ -15,16 +15,18 @@ namespace mirage {
 
 namespace {
 
-// What the march reads beside the pyramid: the direct view's colour with the reflectors at their
-// base colour (a hit on a reflector shows what order 1 shows there), and normals facing the
-// viewer (w: reflector mask). They are drawn first, straight into the frame with the normals
-// beside (`direct`: what method `none` draws); the frame's colour is copied for the march, and
-// the fallback then draws the reflectors its way over their base colour.
+// What the screen-space pass reads beside the pyramid: the direct view's colour with the
+// reflectors at their base colour (a hit on a reflector shows what order 1 shows there), and
+// normals facing the viewer (w: a reflector's material + 1, 0 elsewhere: the pixels the pass
+// shades). They are drawn first, straight into the frame with the normals beside (`direct`: what
+// method `none` draws); the frame's colour is copied for the march, and the fallback then draws
+// the reflectors its way over their base colour.
 struct GBuffer {
   GBuffer(ivec2 s, const FrameTarget& target)
       : size(s), depth_id(target.depth().id()), color_id(target.color().id()) {
     color = gpu::Texture::create2D(GL_RGBA32F, s.x, s.y);  // the frame's format: copied from it
-    normal = gpu::Texture::create2D(GL_RGBA16F, s.x, s.y);
+    // Full floats: the screen-space pass reflects about this normal, and w holds the material.
+    normal = gpu::Texture::create2D(GL_RGBA32F, s.x, s.y);
     normal.setFilter(GL_NEAREST, GL_NEAREST);
     color.setFilter(GL_LINEAR, GL_LINEAR);  // read at the refined hit, between pixel centres
     direct.attachColor(0, target.color());
@@ -75,7 +77,7 @@ class SsrMethod final : public Method {
             "render/shaders/scene.vert", "render/shaders/diffuse.frag", {"MIRAGE_GBUFFER 1"})),
         gbuffer_reflector_(gpu::Program::graphics(
             "render/shaders/scene.vert", "methods/ssr/ssr_gbuffer.frag", {"MIRAGE_GBUFFER 1"})),
-        program_(gpu::Program::graphics("render/shaders/scene.vert", "methods/ssr/ssr.frag")) {
+        program_(gpu::Program::graphics("render/shaders/fullscreen.vert", "methods/ssr/ssr.frag")) {
     const MethodEntry& fallback = findMethod(fallback_name_);
     fallback_ = fallback.create(
         MethodSetup{fallback.info, setup.gpu, setup.passes, setup.params, setup.settings});
@@ -115,16 +117,14 @@ class SsrMethod final : public Method {
     program_.set("u_near", frame.view.nearPlane());
     program_.set("u_far", frame.view.farPlane());
     program_.set("u_forward", frame.view.forward());
-    // Blend over the fallback by the pixel's weight; keep the target's alpha (eye distance). The
-    // reflectors are where the fallback drew them: equal depths pass, nothing is written.
+    // Over the reflector pixels of the G-buffer, blended over the fallback by the pixel's weight;
+    // the target's alpha (eye distance) and reflector ids are kept.
     glEnable(GL_BLEND);
     glBlendFuncSeparatei(0, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-    glDepthFunc(GL_LEQUAL);
-    glDepthMask(GL_FALSE);
-    frame.drawOwnReflectors(program_);
+    glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    frame.passes.drawFullscreen(program_);
+    glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDisable(GL_BLEND);
-    glDepthMask(GL_TRUE);
-    glDepthFunc(GL_LESS);
     // The counts are atomics of the fragment shader: stats() reads them with
     // glGetNamedBufferSubData, which GL orders after the draw only behind this barrier (without
     // it, and without a glFinish between, llvmpipe returned zeros).

@@ -94,12 +94,12 @@ void ZexelCurvedReflectors::draw(FrameContext& frame) const {
 }
 
 void ZexelCurvedReflectors::addStats(std::map<std::string, double>& stats,
-                                     const uint32_t* counters) const {
+                                     const std::vector<double>& counters) const {
   stats["zexel_curved_reflectors"] = inverse_ ? double(curved_.size()) : 0.0;
-  const double rays = double(counters[MIRAGE_ZEXEL_COUNT_CURVED_RAYS]);
+  const double rays = counters[MIRAGE_ZEXEL_COUNT_CURVED_RAYS];
   stats["zexel_curved_pixels"] = rays;
   stats["zexel_curved_reads_per_ray"] =
-      rays > 0.0 ? double(counters[MIRAGE_ZEXEL_COUNT_CURVED_READS]) / rays : 0.0;
+      rays > 0.0 ? counters[MIRAGE_ZEXEL_COUNT_CURVED_READS] / rays : 0.0;
   stats["zexel_cube_captures"] = double(cubes_.captures());
   stats["zexel_cubes_pending"] = double(cubes_.pending());
 }

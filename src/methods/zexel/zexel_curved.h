@@ -40,7 +40,7 @@ class ZexelCurvedReflectors {
   void draw(FrameContext& frame) const;
   // `zexel_curved_reflectors` (served by inverse warping), `zexel_cube_captures`, and from the
   // method's counters of the last frame, `zexel_curved_reads_per_ray`.
-  void addStats(std::map<std::string, double>& stats, const uint32_t* counters) const;
+  void addStats(std::map<std::string, double>& stats, const std::vector<double>& counters) const;
 
  private:
   bool inverse_;

@@ -11,10 +11,13 @@ layout(early_fragment_tests) in;
 
 #include "render/shaders/reflector.glsl"
 #include "methods/zexel/zexel_shared.h"
+#include "render/shaders/counter_slots.glsl"
 
 layout(binding = MIRAGE_UNIT_METHOD) uniform samplerCubeArray u_zexel_cubes;
 layout(binding = MIRAGE_UNIT_ZEXEL_DISTANCES) uniform samplerCubeArray u_zexel_distances;
-layout(std430, binding = MIRAGE_BIND_ZEXEL_COUNTERS) buffer CounterBlock { uint counters[]; };
+layout(std430, binding = MIRAGE_BIND_ZEXEL_COUNTERS) buffer CounterBlock {
+  uint counters[MIRAGE_COUNTER_SLOTS * MIRAGE_COUNTER_SLOT_WORDS];
+};
 layout(std430, binding = MIRAGE_BIND_ZEXEL_FAR) readonly buffer FarBlock { float far_distance[]; };
 uniform int u_layer;     // the drawn reflector's cube
 uniform vec3 u_centre;   // and its centre
@@ -39,8 +42,9 @@ vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflecto
   float t = zexel_inverse_warp(u_layer, position - u_centre, direction, u_step_angle,
                                u_max_steps, u_max_slope, u_texel_angle, u_top_level,
                                far_distance[u_layer], hit_direction, status, samples);
-  atomicAdd(counters[MIRAGE_ZEXEL_COUNT_CURVED_RAYS], 1u);
-  atomicAdd(counters[MIRAGE_ZEXEL_COUNT_CURVED_READS], uint(samples));
+  int slot = counter_slot();
+  atomicAdd(counters[slot + MIRAGE_ZEXEL_COUNT_CURVED_RAYS], 1u);
+  atomicAdd(counters[slot + MIRAGE_ZEXEL_COUNT_CURVED_READS], uint(samples));
   if (t < 0.0f) return vec4(environment_radiance(direction), MISS_DISTANCE);
   // The ray's footprint at the hit (origin's and direction's differentials), as an angle seen
   // from the centre.

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "gpu/counter_slots.h"
 #include "methods/recapture_params.h"
 #include "methods/zexel/zexel_cpu_warper.h"
 #include "methods/zexel/zexel_curved.h"
@@ -113,7 +114,6 @@ class ZexelMethod final : public Method {
         gather_program_(mirrorProgram(splatSizes(splat_, pixel_scale_), true)),
         base_program_(baseColourProgram()),
         resolve_(splatSizes(splat_, pixel_scale_)),
-        counters_(MIRAGE_ZEXEL_COUNTERS * sizeof(uint32_t)),
         policy_(probeRecapture(setup.params)),
         curved_(setup) {
     checkDriverLimits(options_);
@@ -161,9 +161,7 @@ class ZexelMethod final : public Method {
     frame.drawDirect();
     frame.beginPart(gpu::Part::kReflect);
     zexels_warped_ = tiles_warped_ = tile_levels_ = 0;
-    const GLuint zero = 0;
-    glClearNamedBufferData(counters_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    counters_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_ZEXEL_COUNTERS);
+    counters_.resetAndBind(MIRAGE_BIND_ZEXEL_COUNTERS);
     std::vector<int> shown;
     for (auto& m : mirrors_) {
       if (m->drawn) m->shown_pixels = long(queryResult(m->pixels_query));
@@ -182,8 +180,7 @@ class ZexelMethod final : public Method {
   int orderRendered(int requested) const override { return std::min(requested, 1); }
 
   std::map<std::string, double> stats() const override {
-    uint32_t counts[MIRAGE_ZEXEL_COUNTERS] = {};
-    counters_.download(counts, sizeof(counts));
+    const std::vector<double> counts = counters_.sums();
     double pixels = 0.0, passes = 0.0;
     for (const auto& m : mirrors_)
       if (m->drawn) {
@@ -199,8 +196,7 @@ class ZexelMethod final : public Method {
         {"zexel_level", tiles_warped_ > 0 ? double(tile_levels_) / double(tiles_warped_) : 0.0},
         {"mirror_pixels", pixels},
         {"zexel_resolve_passes", passes},
-        {"exposed_fraction",
-         pixels > 0 ? double(counts[MIRAGE_ZEXEL_COUNT_EXPOSED]) / pixels : 0.0},
+        {"exposed_fraction", pixels > 0 ? counts[MIRAGE_ZEXEL_COUNT_EXPOSED] / pixels : 0.0},
         {"reflectors_not_planar", double(not_planar_)}};
     curved_.addStats(s, counts);
     return s;
@@ -307,7 +303,7 @@ class ZexelMethod final : public Method {
   ResolveChoice resolve_choice_;
   gpu::Program warp_program_, pyramid_program_, mirror_program_, gather_program_, base_program_;
   ZexelResolvePass resolve_;
-  gpu::Buffer counters_;
+  gpu::CounterSlots counters_{MIRAGE_ZEXEL_COUNTERS};  // in slots (gpu/counter_slots.h)
   std::vector<std::unique_ptr<ZexelMirror>> mirrors_;
   std::unique_ptr<FrameTarget> scratch_;
   int not_planar_ = 0;

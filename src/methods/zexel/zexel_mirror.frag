@@ -13,6 +13,7 @@ layout(early_fragment_tests) in;
 
 #include "render/shaders/reflector.glsl"
 #include "methods/zexel/zexel_shared.h"
+#include "render/shaders/counter_slots.glsl"
 #include "methods/zexel/zexel_splat_shared.h"
 
 // What the resolve left a pixel of the mirror's rectangle; the warp's keys and cells for the
@@ -21,7 +22,9 @@ layout(early_fragment_tests) in;
 layout(binding = MIRAGE_UNIT_ZEXEL_RESOLVED) uniform samplerBuffer u_resolved;
 layout(binding = MIRAGE_UNIT_ZEXEL_KEYS) uniform usamplerBuffer u_keys;
 layout(binding = MIRAGE_UNIT_ZEXEL_CELLS) uniform usamplerBuffer u_cells;  // x: in u_keys
-layout(std430, binding = MIRAGE_BIND_ZEXEL_COUNTERS) buffer CounterBlock { uint counters[]; };
+layout(std430, binding = MIRAGE_BIND_ZEXEL_COUNTERS) buffer CounterBlock {
+  uint counters[MIRAGE_COUNTER_SLOTS * MIRAGE_COUNTER_SLOT_WORDS];
+};
 layout(binding = MIRAGE_IMAGE_ZEXEL_HISTORY, rgba32f) uniform coherent image2D u_history;
 
 uniform int u_keep;    // 1: exposures keep the last frame's colour (the no-clear option)
@@ -63,7 +66,7 @@ vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflecto
       texelFetch(u_resolved, (pixel.y - u_rect.y) * (u_rect.z - u_rect.x) + pixel.x - u_rect.x);
 #endif
   if (seen.a < 0.0f) {
-    atomicAdd(counters[MIRAGE_ZEXEL_COUNT_EXPOSED], 1u);
+    atomicAdd(counters[counter_slot() + MIRAGE_ZEXEL_COUNT_EXPOSED], 1u);
     if (u_fill > 0) seen = zexel_farthest_neighbour(pixel, u_fill, u_unit, u_rect);
     if (seen.a < 0.0f)
       seen = u_keep != 0 ? imageLoad(u_history, pixel) : vec4(0.0f, 0.0f, 0.0f, MISS_DISTANCE);

@@ -9,7 +9,7 @@
 
 #define MIRAGE_BIND_ZEXEL_KEYS 4        // uint a cell: its first word's x (the only one cleared)
 #define MIRAGE_BIND_ZEXEL_CELLS 5       // uvec4[2] a cell: its words but the key
-#define MIRAGE_BIND_ZEXEL_COUNTERS 6    // uint[MIRAGE_ZEXEL_COUNTERS], below
+#define MIRAGE_BIND_ZEXEL_COUNTERS 6    // MIRAGE_ZEXEL_COUNTERS, below, in counter slots
 #define MIRAGE_BIND_ZEXEL_TILES 7       // uvec2 per tile warped: its coordinates, its spacing
 #define MIRAGE_BIND_ZEXEL_FAR 8         // float per curved reflector's cube: its farthest distance
 #define MIRAGE_UNIT_ZEXEL_MAPS 4        // sampler2DArray: every map of the mirror, mip levels

@@ -3,8 +3,7 @@
 //     vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflector);
 // returning the radiance arriving along the reflected ray (rgb) and the hit distance (a;
 // MISS_DISTANCE when the ray leaves the scene). Defining MIRAGE_NO_REFLECTION before the include
-// shades reflectors with their base colour (method `none`); MIRAGE_REFLECTION_COVERAGE makes the
-// method blend its result over the target by reflection_coverage() (method `ssr`).
+// shades reflectors with their base colour (method `none`).
 #include "render/shaders/surface.glsl"
 
 // Screen-space derivatives of the reflected direction, taken in uniform control flow so that
@@ -35,11 +34,6 @@ vec4 probe_radiance(samplerCubeArray probes, vec3 direction, float layer, vec3 d
 #ifndef MIRAGE_NO_REFLECTION
 vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflector);
 #endif
-#ifdef MIRAGE_REFLECTION_COVERAGE
-// Defined by a method that blends its reflection over another's: the weight of its own
-// reflection at this pixel (0: keep what is there), set by reflected_radiance.
-float reflection_coverage();
-#endif
 
 void main() {
   MaterialData m = surface_material();
@@ -60,14 +54,6 @@ void main() {
   vec4 reflected = reflected_radiance(p, r, n, v_in.ids.y);
   float cos_theta = max(dot(n, to_viewer), 0.0f);
   vec3 shaded = shade_reflector(m, cos_theta, reflected.a, reflected.rgb);
-#ifdef MIRAGE_REFLECTION_COVERAGE
-  // The method blends its reflection over what is already drawn there (a fallback's) by this
-  // weight: alpha is the blend factor, and the target's alpha (the eye distance) is kept.
-  float coverage = reflection_coverage();
-  if (coverage <= 0.0f) discard;
-  out_color = vec4(shaded, coverage);
-#else
   out_color = vec4(shaded, eye_distance());
-#endif
 #endif
 }

@@ -35,13 +35,13 @@ float eye_distance() { return length(v_in.world_position - frame.eye.xyz); }
 
 #ifdef MIRAGE_GBUFFER
 // A G-buffer pass (method `ssr`) also writes the surface's normal turned towards the viewer,
-// and whether the surface is a reflector (w: 1) or diffuse (w: 0).
+// and in w a reflector's material index + 1 (0: a diffuse surface).
 layout(location = 2) out vec4 out_normal;
 void write_gbuffer(bool reflector) {
   vec3 p = v_in.world_position;
   vec3 to_viewer = normalize(frame.eye.xyz - p);
   vec3 n = facing_normal(surface_normal(), cross(dFdx(p), dFdy(p)), to_viewer);
-  out_normal = vec4(n, reflector ? 1.0f : 0.0f);
+  out_normal = vec4(n, reflector ? float(v_in.ids.x + 1) : 0.0f);
 }
 #else
 void write_gbuffer(bool reflector) {}
