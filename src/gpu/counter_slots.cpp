@@ -18,12 +18,12 @@ void CounterSlots::resetAndBind(GLuint binding) {
   const Words zeros{};
   buffer_.upload(std::span<const GLuint>(zeros));
   buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, binding);
-  bound_ = true;
+  counted_ = true;
 }
 
 std::vector<double> CounterSlots::sums() const {
   std::vector<double> out(size_t(counters_), 0.0);
-  if (!bound_) return out;
+  if (!counted_) return out;
   Words words{};
   buffer_.download(words.data(), sizeof(words));
   for (int s = 0; s < MIRAGE_COUNTER_SLOTS; ++s)

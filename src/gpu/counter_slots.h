@@ -18,10 +18,12 @@ class CounterSlots {
   // Each counter summed over the slots; zeros before the first resetAndBind. The draws that
   // count must be followed by glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT).
   std::vector<double> sums() const;
+  // Whether a draw has counted into them yet (resetAndBind called).
+  bool counted() const { return counted_; }
 
  private:
   int counters_;
-  bool bound_ = false;
+  bool counted_ = false;
   Buffer buffer_;
 };
 

@@ -45,13 +45,6 @@ void Framebuffer::setDrawBuffers(int count) {
   glNamedFramebufferDrawBuffers(id(), GLsizei(buffers.size()), buffers.data());
 }
 
-void Framebuffer::setDrawBuffers(std::initializer_list<int> indices) {
-  std::vector<GLenum> buffers;
-  for (int i : indices)
-    buffers.push_back(i < 0 ? GLenum(GL_NONE) : GLenum(GL_COLOR_ATTACHMENT0 + i));
-  glNamedFramebufferDrawBuffers(id(), GLsizei(buffers.size()), buffers.data());
-}
-
 void Framebuffer::checkComplete(const char* what) const {
   GLenum status = glCheckNamedFramebufferStatus(id(), GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE)

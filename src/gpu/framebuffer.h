@@ -1,8 +1,6 @@
 // Framebuffer objects (DSA): colour and depth attachments, completeness checks.
 #pragma once
 
-#include <initializer_list>
-
 #include "gpu/handle.h"
 #include "gpu/texture.h"
 
@@ -22,9 +20,6 @@ class Framebuffer {
   void attachDepth(const Texture& texture, int level = 0, int layer = -1);
   // Selects colour attachments 0..count-1 as draw buffers.
   void setDrawBuffers(int count);
-  // Selects the colour attachments `indices` as draw buffers 0, 1, ...; -1: that draw buffer
-  // writes nowhere (GL_NONE).
-  void setDrawBuffers(std::initializer_list<int> indices);
   // Throws RuntimeError naming `what` if the framebuffer is incomplete.
   void checkComplete(const char* what) const;
   void bind() const { glBindFramebuffer(GL_FRAMEBUFFER, id()); }

@@ -16,12 +16,12 @@
 #define MIRAGE_BIND_BILLBOARD_RANGES 6   // SSBO BillboardRange[] (one per reflector)
 #define MIRAGE_BIND_BILLBOARD_ENTRIES 7  // SSBO int[]: billboard indices the ranges point into
 #define MIRAGE_BIND_IMPOSTOR_COUNTS 8    // SSBO uint[]: the frame's counts, in slots (below)
-// The impostor trace's counts of the frame (atomics, one of each a pixel):
+// The impostor trace's counts of the frame (atomics, one of each a pixel, in the slots of
+// gpu/counter_slots_shared.h):
 #define MIRAGE_IMPOSTOR_CANDIDATES 0  // impostors tested (billboards; depth-mapped objects)
 #define MIRAGE_IMPOSTOR_RAYS 1        // reflected rays traced (one a bounce)
 #define MIRAGE_IMPOSTOR_PIXELS 2      // reflector pixels shaded
 #define MIRAGE_IMPOSTOR_COUNTS 3
-// (kept in slots of gpu/counter_slots_shared.h)
 // The surface array holds every billboard's coverage in alpha, so that the alpha test is one
 // lookup whatever the kind: diffuse layers hold the colour (premultiplied by coverage),
 // reflective layers the world-space normal.

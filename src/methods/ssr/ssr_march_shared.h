@@ -33,18 +33,32 @@ SHARED_FN bool ssr_pixel_hit(float za, float zb, float d, float limit) {
   return d < 1.0f && max(za, zb) >= d && za <= limit;
 }
 
-// The parameter along from -> to where the ray leaves the cell of size `cell` holding the point
-// at parameter t (clamped to 1).
-SHARED_FN float ssr_cell_exit(vec3 from, vec3 to, float t, float cell) {
+// A ray's cell exits, prepared once a ray: a cell's exit along an axis is (its far edge − from) /
+// d, the edge cell · (corner + ahead), so it is edge · inv + offset; an axis the ray does not
+// move along never ends it (its parameter 2, past the end). No division per cell.
+SHARED_FN void ssr_exit_setup(vec3 from, vec3 to, SHARED_OUT(vec2) ahead, SHARED_OUT(vec2) inv,
+                              SHARED_OUT(vec2) offset) {
   vec2 d = vec2(to.x - from.x, to.y - from.y);
-  vec2 p = vec2(from.x, from.y) + t * d;
-  vec2 c = floor(p / cell);
-  float exit_t = 1.0f;
-  if (d.x > 0.0f) exit_t = min(exit_t, ((c.x + 1.0f) * cell - from.x) / d.x);
-  if (d.x < 0.0f) exit_t = min(exit_t, (c.x * cell - from.x) / d.x);
-  if (d.y > 0.0f) exit_t = min(exit_t, ((c.y + 1.0f) * cell - from.y) / d.y);
-  if (d.y < 0.0f) exit_t = min(exit_t, (c.y * cell - from.y) / d.y);
-  return max(exit_t, t);
+  ahead = vec2(d.x > 0.0f ? 1.0f : 0.0f, d.y > 0.0f ? 1.0f : 0.0f);
+  inv = vec2(d.x != 0.0f ? 1.0f / d.x : 0.0f, d.y != 0.0f ? 1.0f / d.y : 0.0f);
+  offset = vec2(d.x != 0.0f ? -from.x * inv.x : 2.0f, d.y != 0.0f ? -from.y * inv.y : 2.0f);
+}
+
+// The parameter along from -> to where the ray leaves the cell of size `cell` holding the point
+// at parameter t (clamped to 1), from its prepared exits; `corner` receives the cell.
+SHARED_FN float ssr_exit_from(vec3 from, vec3 to, vec2 ahead, vec2 inv, vec2 offset, float t,
+                              float cell, SHARED_OUT(vec2) corner) {
+  vec2 d = vec2(to.x - from.x, to.y - from.y);
+  corner = floor((vec2(from.x, from.y) + t * d) * (1.0f / cell));
+  vec2 exits = (corner + ahead) * cell * inv + offset;
+  return max(min(min(exits.x, exits.y), 1.0f), t);
+}
+
+// The same for one cell of a ray.
+SHARED_FN float ssr_cell_exit(vec3 from, vec3 to, float t, float cell) {
+  vec2 ahead, inv, offset, corner;
+  ssr_exit_setup(from, to, ahead, inv, offset);
+  return ssr_exit_from(from, to, ahead, inv, offset, t, cell, corner);
 }
 
 // A small step past a cell boundary, in parameter units: 1/1024 pixel along the major axis.
@@ -58,26 +72,19 @@ SHARED_FN float ssr_nudge(vec3 from, vec3 to) {
 // pixel, `steps` the cells visited. The reflecting pixel itself is never tested.
 SHARED_FN float ssr_march(vec3 from, vec3 to, int levels, int max_steps,
                           SHARED_OUT(ivec2) hit_pixel, SHARED_OUT(int) steps) {
-  vec3 d = to - from;
-  // A cell's exit along each axis is (its far edge - from) / d: the edge is cell * (c + ahead),
-  // and an axis the ray does not move along never ends it (its parameter 2, past the end).
-  vec2 ahead = vec2(d.x > 0.0f ? 1.0f : 0.0f, d.y > 0.0f ? 1.0f : 0.0f);
-  vec2 inv = vec2(d.x != 0.0f ? 1.0f / d.x : 0.0f, d.y != 0.0f ? 1.0f / d.y : 0.0f);
-  vec2 offset = vec2(d.x != 0.0f ? -from.x * inv.x : 2.0f, d.y != 0.0f ? -from.y * inv.y : 2.0f);
+  vec2 ahead, inv, offset, corner;
+  ssr_exit_setup(from, to, ahead, inv, offset);
   float nudge = ssr_nudge(from, to);
-  float t = ssr_cell_exit(from, to, 0.0f, 1.0f) + nudge;
+  float t = ssr_exit_from(from, to, ahead, inv, offset, 0.0f, 1.0f, corner) + nudge;
   int level = 0;
   steps = 0;
   hit_pixel = ivec2(-1, -1);
   while (t < 1.0f && steps < max_steps) {
     steps += 1;
-    float cell = float(1 << level);
-    vec2 corner = floor((vec2(from.x, from.y) + t * vec2(d.x, d.y)) * (1.0f / cell));
-    vec2 exits = (corner + ahead) * cell * inv + offset;
-    float exit_t = max(min(min(exits.x, exits.y), 1.0f), t);
+    float exit_t = ssr_exit_from(from, to, ahead, inv, offset, t, float(1 << level), corner);
     ivec2 c = ivec2(corner);
-    float za = from.z + t * d.z;
-    float zb = from.z + exit_t * d.z;
+    float za = from.z + t * (to.z - from.z);
+    float zb = from.z + exit_t * (to.z - from.z);
     vec2 here = ssr_cell(level, c.x, c.y);
     if (max(za, zb) < here.x || min(za, zb) > here.y) {
       // Nothing in this cell is as near as the ray gets, or the ray passes behind all of it by

@@ -1,6 +1,5 @@
 #include "methods/ssr/ssr_method.h"
 
-#include <array>
 #include <cmath>
 
 #include "gpu/counter_slots.h"
@@ -129,7 +128,6 @@ class SsrMethod final : public Method {
     // glGetNamedBufferSubData, which GL orders after the draw only behind this barrier (without
     // it, and without a glFinish between, llvmpipe returned zeros).
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    counted_ = true;
   }
 
   int orderRendered(int requested) const override { return std::min(requested, 1); }
@@ -154,7 +152,7 @@ class SsrMethod final : public Method {
 
   std::map<std::string, double> stats() const override {
     std::map<std::string, double> s = fallback_->stats();
-    if (!counted_) return s;
+    if (!counts_.counted()) return s;
     const std::vector<double> c = counts_.sums();
     double pixels = 0.0;
     for (int k = 0; k < MIRAGE_SSR_OUTCOMES; ++k) pixels += double(c[size_t(k)]);
@@ -183,7 +181,6 @@ class SsrMethod final : public Method {
   std::unique_ptr<GBuffer> gbuffer_;
   HiZPyramid hiz_;
   gpu::CounterSlots counts_{MIRAGE_SSR_COUNTS};
-  bool counted_ = false;
 };
 
 }  // namespace
