@@ -21,6 +21,8 @@
 
 namespace mirage {
 
+struct ProbeLookup;
+
 inline constexpr int kAnyOrder = 1 << 20;
 
 struct MethodInfo {
@@ -77,10 +79,6 @@ struct FrameContext {
   // reflector its own way.
   const std::vector<int>* own = nullptr;
   bool direct = true;
-  // The reflectors' depths are in the target already (method `ssr` draws them at their base
-  // colour before its fallback draws them its way): drawOwnReflectors then tests LEQUAL, so that
-  // the visible surface of each pixel passes again, and only it.
-  bool reflectors_in_depth = false;
 
   // Whether this method draws reflector `instance` in the eye view.
   bool owns(int instance) const {
@@ -92,12 +90,10 @@ struct FrameContext {
   }
   // This method's reflectors in the eye view, with `program`.
   void drawOwnReflectors(const gpu::Program& program) const {
-    if (reflectors_in_depth) glDepthFunc(GL_LEQUAL);
     if (own)
       passes.drawReflectorInstances(program, *own);
     else
       passes.drawReflectors(program);
-    if (reflectors_in_depth) glDepthFunc(GL_LESS);
   }
 
   void beginPart(gpu::Part part) const {
@@ -134,6 +130,10 @@ class Method {
   virtual int orderRendered(int requested) const { return std::min(requested, info().max_order); }
   // Counters for reports and tests: captures made, structures built, ...
   virtual std::map<std::string, double> stats() const { return {}; }
+  // The reflection probes this method shades its reflectors with, as another pass looks them up
+  // (`ssr` shades the pixels its screen cannot show with its fallback's), or null: none, or not
+  // captured yet (after update() they are).
+  virtual const ProbeLookup* probeLookup() const { return nullptr; }
   // Why `envmap` draws in this method's place (the driver refused it: methods/method_guard.h),
   // or empty.
   virtual std::string fallbackReason() const { return {}; }

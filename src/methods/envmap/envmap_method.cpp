@@ -7,6 +7,7 @@
 #include "methods/recapture_params.h"
 #include "render/base_colour.h"
 #include "render/probe_array.h"
+#include "render/probe_lookup.h"
 
 namespace mirage {
 
@@ -16,8 +17,9 @@ enum class Variant { kProbes, kBox, kInfinite };
 
 std::vector<std::string> shaderDefines(Variant variant) {
   if (variant == Variant::kInfinite) return {"ENVMAP_INFINITE 1"};
-  if (variant == Variant::kBox) return {"ENVMAP_BOX 1"};
-  return {};
+  ProbeLookup lookup;
+  lookup.box = variant == Variant::kBox;
+  return lookup.defines();
 }
 
 class EnvmapMethod final : public Method {
@@ -34,7 +36,11 @@ class EnvmapMethod final : public Method {
         base_program_(baseColourProgram()),
         diffuse_(setup.gpu.scene().diffuseInstances()),
         reflectors_(setup.gpu.scene().reflectorInstances()),
-        recapture_(infinite_ ? RecapturePolicy{} : probeRecapture(setup.params)) {}
+        recapture_(infinite_ ? RecapturePolicy{} : probeRecapture(setup.params)) {
+    lookup_.box = variant == Variant::kBox;
+    lookup_.sphere_proxy = sphere_proxy_;
+    lookup_.centres = &centres_;
+  }
 
   void update(FrameContext& frame) override {
     if (infinite_ || reflectors_.empty() || frame.settings.order == 0) return;
@@ -54,11 +60,11 @@ class EnvmapMethod final : public Method {
       frame.drawOwnReflectors(base_program_);
       return;
     }
-    if (!infinite_) levels_.back()->bind(MIRAGE_UNIT_METHOD);
-    if (variant_ == Variant::kBox)
-      centres_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_METHOD_SSBO);
+    if (const ProbeLookup* lookup = probeLookup()) lookup->bind(program_);
     frame.drawOwnReflectors(program_);
   }
+
+  const ProbeLookup* probeLookup() const override { return lookup_.probes ? &lookup_ : nullptr; }
 
   int orderRendered(int requested) const override {
     return infinite_ ? std::min(requested, 1) : requested;
@@ -69,7 +75,7 @@ class EnvmapMethod final : public Method {
                                        {"capture_passes", double(capture_passes_)},
                                        {"probes_pending", double(pending_)}};
     if (variant_ == Variant::kBox) {
-      const vec3 e = box_.extent();
+      const vec3 e = lookup_.proxy.extent();
       s["proxy_box_x"] = e.x;
       s["proxy_box_y"] = e.y;
       s["proxy_box_z"] = e.z;
@@ -106,6 +112,7 @@ class EnvmapMethod final : public Method {
       level->nextFrame();
     }
     if (variant_ == Variant::kBox) setUpBox(frame, *levels_.back());
+    lookup_.probes = levels_.back().get();
   }
 
   // Captures the due (level, probe) units, a level's before the next level's.
@@ -119,10 +126,11 @@ class EnvmapMethod final : public Method {
     for (int unit : due) {
       const int l = unit / count, r = unit % count;
       if (l != last_level && l > 0) {
+        // The lookups of this level read the level below (the box's, captured where it was).
         levels_[size_t(l - 1)]->finish();
-        levels_[size_t(l - 1)]->bind(MIRAGE_UNIT_METHOD);
-        // The box lookups of this level read the level below, captured where it was.
         if (variant_ == Variant::kBox) setUpBox(frame, *levels_[size_t(l - 1)]);
+        lookup_.probes = levels_[size_t(l - 1)].get();
+        lookup_.bind(program_);
       }
       if (l != last_level) ++capture_passes_;
       last_level = l;
@@ -143,20 +151,16 @@ class EnvmapMethod final : public Method {
   // looked up) was captured (in a moving scene, within the tolerances of where its reflector is
   // now).
   void setUpBox(FrameContext& frame, const ProbeArray& level) {
-    box_ = Bounds3{};
-    for (int i : diffuse_) box_.extend(frame.gpu.instanceBounds(i));
+    Bounds3& box = lookup_.proxy;
+    box = Bounds3{};
+    for (int i : diffuse_) box.extend(frame.gpu.instanceBounds(i));
     std::vector<vec4> centres;
     for (size_t r = 0; r < reflectors_.size(); ++r) {
       const vec3 c = level.centre(int(r), frame.gpu.instanceBounds(reflectors_[r]).center());
       centres.push_back(vec4(c, 1.0f));
-      box_.extend(c);
+      box.extend(c);
     }
     centres_.upload(std::span<const vec4>(centres));
-    centres_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_METHOD_SSBO);
-    program_.set("u_box_min", box_.lo);
-    program_.set("u_box_max", box_.hi);
-    program_.set("u_proxy_sphere", sphere_proxy_ ? 1 : 0);
-    program_.set("u_sphere", vec4(box_.center(), box_.radius()));
   }
 
   Variant variant_;
@@ -166,8 +170,10 @@ class EnvmapMethod final : public Method {
   gpu::Program program_, base_program_;
   // Level l of every reflector's probe; the frame looks up the last.
   std::vector<std::unique_ptr<ProbeArray>> levels_;
-  gpu::Buffer centres_;       // envmap-box: vec4 probe centre per reflector
-  Bounds3 box_;               // envmap-box: the proxy
+  gpu::Buffer centres_;  // envmap-box: vec4 probe centre per reflector
+  // What the reflector pass (and Method::probeLookup's callers) binds: the last level's probes,
+  // or, during captures, the level below the one captured; envmap-box's proxy and centres.
+  ProbeLookup lookup_;
   std::vector<int> diffuse_;  // every diffuse instance: what the probes show besides reflectors
   std::vector<int> reflectors_;
   RecapturePolicy recapture_;

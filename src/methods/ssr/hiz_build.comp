@@ -1,6 +1,7 @@
-// Method `ssr`: one level of the hierarchical-Z pyramid. Level 0 (u_copy) is the depth buffer
-// copied texel for texel, 1 ("nothing") past its edges up to the pyramid's power-of-two size:
-// the march reads it while the depth buffer is attached for the depth test. Each texel holds in
+// Method `ssr`: one level of the hierarchical-Z pyramid, the cells that hold some of the screen
+// (hiz_pyramid.h). Level 0 (u_copy) is the depth buffer copied texel for texel: the march reads
+// it while the depth buffer is attached for the depth test. Past the screen's edge (past the
+// level below's covered cells) the level below counts as 1, "nothing". Each texel holds in
 // r the nearest depth and in g the behind limit of the farthest drawn surface
 // (ssr_depth_shared.h: the window depth `thickness` behind it; 0 where nothing is drawn); every
 // level above holds the minimum of r and the maximum of g of the up to four cells below.

@@ -18,6 +18,11 @@ ivec2 HiZPyramid::levelSize(ivec2 screen, int level) {
   return glm::max(paddedSize(screen) >> level, ivec2(1));
 }
 
+ivec2 HiZPyramid::coveredSize(ivec2 screen, int level) {
+  const ivec2 cell(1 << level);
+  return glm::max((screen + cell - 1) / cell, ivec2(1));
+}
+
 void HiZPyramid::build(const gpu::Texture& depth, ivec2 screen, const HiZDepthRange& range) {
   const ivec2 padded = paddedSize(screen);
   const int levels = gpu::Texture::fullMipLevels(std::max(padded.x, padded.y));
@@ -33,7 +38,8 @@ void HiZPyramid::build(const gpu::Texture& depth, ivec2 screen, const HiZDepthRa
   depth.bind(MIRAGE_UNIT_SSR_DEPTH);
   ivec2 below = screen;
   for (int level = 0; level < levels; ++level) {
-    const ivec2 size = levelSize(screen, level);
+    // Only the cells over the screen: a march clipped to the screen reads no other.
+    const ivec2 size = coveredSize(screen, level);
     program_.set("u_out_size", size);
     program_.set("u_in_size", below);
     program_.set("u_copy", level == 0 ? 1 : 0);

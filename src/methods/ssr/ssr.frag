@@ -1,15 +1,18 @@
 // Method `ssr`: screen-space reflections, a screen-space pass over the reflector pixels of the
 // frame's G-buffer (one triangle over the viewport; the reflectors are not drawn again). Each
-// reflector pixel's point comes from the depth buffer and its normal and material from the
-// G-buffer; its reflected ray marches the hierarchical-Z pyramid of the direct view's depth
-// (ssr_march_shared.h) and, where it hits a surface seen from its front, shows the direct
+// reflector pixel's point comes from the depth buffer and its normal, material and reflector
+// from the G-buffer; its reflected ray marches the hierarchical-Z pyramid of the direct view's
+// depth (ssr_march_shared.h) and, where it hits a surface seen from its front, shows the direct
 // view's colour there; its weight fades to 0 near the screen's edges. Rays that leave the
-// screen, hit nothing, hit a back face or run out of steps get weight 0. The pixel, shaded with
-// the shared model, is blended over the fallback's by that weight (alpha; the blend keeps the
-// frame's alpha, the eye distance).
+// screen, hit nothing, hit a back face or run out of steps get weight 0. Where the weight is
+// below 1 the fallback's probe (render/shaders/probe_lookup.glsl; PROBE_BOX for envmap-box)
+// makes up the rest: the pixel is the weight's mix of the two, each shaded with the shared
+// model. The frame's alpha (the eye distance) and ids are kept.
 #include "render/shaders/common.glsl"
 #include "methods/ssr/ssr_shared.h"
 #include "render/shaders/counter_slots.glsl"
+#include "render/shaders/probe_lookup.glsl"
+#include "shading/octahedral.h"
 
 layout(location = 0) out vec4 out_color;
 
@@ -86,7 +89,7 @@ vec4 reflected_radiance(vec3 from, vec3 position, vec3 direction) {
       count(MIRAGE_SSR_OFF_SCREEN);
     else
       count(MIRAGE_SSR_NO_HIT);
-  } else if (dot(texelFetch(u_normal, pixel, 0).xyz, direction) > 0.0f) {
+  } else if (dot(octahedral_decode(texelFetch(u_normal, pixel, 0).xy), direction) > 0.0f) {
     count(MIRAGE_SSR_BACK_FACE);
   } else {
     float exit_t = ssr_cell_exit(from, to, t, 1.0f);
@@ -108,17 +111,37 @@ vec4 reflected_radiance(vec3 from, vec3 position, vec3 direction) {
   return vec4(0.0f, 0.0f, 0.0f, MISS_DISTANCE);
 }
 
+// The derivatives of the reflected direction r across the pixel's 2x2 quad, for the probe's
+// filter. Taken before any lane leaves (uniform control flow); a neighbour on another reflector
+// (or none) says nothing of this one's r: that axis then borrows the other's, and with neither
+// the lookup is at full resolution (a pixel whose quad holds no other pixel of its reflector).
+void reflected_footprint(vec3 r, float reflector, out vec3 dx, out vec3 dy) {
+  dx = dFdxFine(r);
+  dy = dFdyFine(r);
+  bool x_same = dFdxFine(reflector) == 0.0f, y_same = dFdyFine(reflector) == 0.0f;
+  if (!x_same) dx = y_same ? dy : vec3(0.0f);
+  if (!y_same) dy = x_same ? dx : vec3(0.0f);
+}
+
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   vec4 g = texelFetch(u_normal, pixel, 0);
-  if (g.w < 0.5f) discard;  // not one of this method's reflectors
-  MaterialData m = materials[int(g.w + 0.5f) - 1];
   vec3 window = vec3(gl_FragCoord.xy, texelFetch(u_hiz, pixel, 0).r);
   vec3 p = to_world(window);
-  vec3 n = normalize(g.xyz);
+  vec3 n = octahedral_decode(g.xy);
   vec3 to_viewer = normalize(frame.eye.xyz - p);
-  vec4 reflected = reflected_radiance(window, p, reflect_direction(-to_viewer, n));
-  if (g_coverage <= 0.0f) discard;  // the fallback's pixel stays
+  vec3 r = reflect_direction(-to_viewer, n);
+  vec3 dx, dy;
+  reflected_footprint(r, g.w, dx, dy);
+  if (g.z < 0.5f) discard;  // not one of this method's reflectors
+  MaterialData m = materials[int(g.z + 0.5f) - 1];
+  vec4 reflected = reflected_radiance(window, p, r);
   float cos_theta = max(dot(n, to_viewer), 0.0f);
-  out_color = vec4(shade_reflector(m, cos_theta, reflected.a, reflected.rgb), g_coverage);
+  vec3 shaded = vec3(0.0f);
+  if (g_coverage > 0.0f) shaded = shade_reflector(m, cos_theta, reflected.a, reflected.rgb);
+  if (g_coverage < 1.0f) {
+    vec4 probe = probe_lookup(p, r, int(g.w + 0.5f), dx, dy);
+    shaded = mix(shade_reflector(m, cos_theta, probe.a, probe.rgb), shaded, g_coverage);
+  }
+  out_color = vec4(shaded, 0.0f);  // alpha masked: the eye distance stays
 }

@@ -9,6 +9,7 @@
 #include "methods/ssr/hiz_pyramid.h"
 #include "methods/ssr/ssr_shared.h"
 #include "render/frame_target.h"
+#include "render/probe_lookup.h"
 
 namespace mirage {
 
@@ -16,15 +17,16 @@ namespace {
 
 // What the screen-space pass reads beside the pyramid: the direct view's colour with the
 // reflectors at their base colour (a hit on a reflector shows what order 1 shows there), and
-// normals facing the viewer (w: a reflector's material + 1, 0 elsewhere: the pixels the pass
-// shades). They are drawn first, straight into the frame with the normals beside (`direct`: what
-// method `none` draws); the frame's colour is copied for the march, and the fallback then draws
-// the reflectors its way over their base colour.
+// normals facing the viewer (render/shaders/surface.glsl: xy the octahedral normal, z a
+// reflector's material + 1, w its reflector id; z 0 elsewhere: the pixels the pass shades). They
+// are drawn first, straight into the frame with the normals beside (`direct`: what method `none`
+// draws); the frame's colour is copied for the march, and the pass then shades the reflector
+// pixels over their base colour.
 struct GBuffer {
   GBuffer(ivec2 s, const FrameTarget& target)
       : size(s), depth_id(target.depth().id()), color_id(target.color().id()) {
     color = gpu::Texture::create2D(GL_RGBA32F, s.x, s.y);  // the frame's format: copied from it
-    // Full floats: the screen-space pass reflects about this normal, and w holds the material.
+    // Full floats: the screen-space pass reflects about this normal, and z, w hold whole numbers.
     normal = gpu::Texture::create2D(GL_RGBA32F, s.x, s.y);
     normal.setFilter(GL_NEAREST, GL_NEAREST);
     color.setFilter(GL_LINEAR, GL_LINEAR);  // read at the refined hit, between pixel centres
@@ -59,6 +61,20 @@ struct DepthEqual {
   DepthEqual& operator=(const DepthEqual&) = delete;
 };
 
+// The fallback method, made with ssr's own parameters (a superset of its).
+std::unique_ptr<Method> makeFallback(const MethodSetup& setup) {
+  const MethodEntry& fallback = findMethod(setup.params.text("ssr-fallback"));
+  return fallback.create(
+      MethodSetup{fallback.info, setup.gpu, setup.passes, setup.params, setup.settings});
+}
+
+// The screen-space pass's defines for the fallback's probe lookup (render/probe_lookup.h).
+std::vector<std::string> fallbackDefines(const std::string& fallback) {
+  ProbeLookup lookup;
+  lookup.box = fallback == "envmap-box";
+  return lookup.defines();
+}
+
 class SsrMethod final : public Method {
  public:
   explicit SsrMethod(const MethodSetup& setup)
@@ -76,11 +92,9 @@ class SsrMethod final : public Method {
             "render/shaders/scene.vert", "render/shaders/diffuse.frag", {"MIRAGE_GBUFFER 1"})),
         gbuffer_reflector_(gpu::Program::graphics(
             "render/shaders/scene.vert", "methods/ssr/ssr_gbuffer.frag", {"MIRAGE_GBUFFER 1"})),
-        program_(gpu::Program::graphics("render/shaders/fullscreen.vert", "methods/ssr/ssr.frag")) {
-    const MethodEntry& fallback = findMethod(fallback_name_);
-    fallback_ = fallback.create(
-        MethodSetup{fallback.info, setup.gpu, setup.passes, setup.params, setup.settings});
-  }
+        fallback_(makeFallback(setup)),
+        program_(gpu::Program::graphics("render/shaders/fullscreen.vert", "methods/ssr/ssr.frag",
+                                        fallbackDefines(fallback_name_))) {}
 
   void update(FrameContext& frame) override { fallback_->update(frame); }
 
@@ -92,14 +106,10 @@ class SsrMethod final : public Method {
     if (frame.settings.order > 0)
       glCopyImageSubData(frame.target.color().id(), GL_TEXTURE_2D, 0, 0, 0, 0, gbuffer_->color.id(),
                          GL_TEXTURE_2D, 0, 0, 0, 0, size.x, size.y, 1);
-    // The fallback's reflectors over their base colour: what shows where the screen has no data.
-    FrameContext fallback_frame = frame;
-    fallback_frame.direct = false;
-    fallback_frame.reflectors_in_depth = true;
-    frame.target.bind();
-    frame.passes.begin(frame.view, frame.settings);
-    fallback_->render(fallback_frame);
-    if (frame.settings.order == 0) return;
+    frame.beginPart(gpu::Part::kReflect);
+    // Order 0: the reflectors keep the base colour the G-buffer drew them with.
+    const ProbeLookup* probes = fallback_->probeLookup();
+    if (frame.settings.order == 0 || !probes) return;
     hiz_.build(frame.target.depth(), size,
                HiZDepthRange{thickness_, frame.view.nearPlane(), frame.view.farPlane()});
 
@@ -108,6 +118,7 @@ class SsrMethod final : public Method {
     hiz_.texture().bind(MIRAGE_UNIT_SSR_HIZ);
     gbuffer_->color.bind(MIRAGE_UNIT_SSR_COLOR);
     gbuffer_->normal.bind(MIRAGE_UNIT_SSR_NORMAL);
+    probes->bind(program_);
     counts_.resetAndBind(MIRAGE_BIND_SSR_COUNTS);
     program_.set("u_size", size);
     program_.set("u_levels", hiz_.levels());
@@ -116,14 +127,13 @@ class SsrMethod final : public Method {
     program_.set("u_near", frame.view.nearPlane());
     program_.set("u_far", frame.view.farPlane());
     program_.set("u_forward", frame.view.forward());
-    // Over the reflector pixels of the G-buffer, blended over the fallback by the pixel's weight;
-    // the target's alpha (eye distance) and reflector ids are kept.
-    glEnable(GL_BLEND);
-    glBlendFuncSeparatei(0, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    // Over the reflector pixels of the G-buffer; the target's alpha (eye distance) and reflector
+    // ids are kept.
+    glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
     glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     frame.passes.drawFullscreen(program_);
+    glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glDisable(GL_BLEND);
     // The counts are atomics of the fragment shader: stats() reads them with
     // glGetNamedBufferSubData, which GL orders after the draw only behind this barrier (without
     // it, and without a glFinish between, llvmpipe returned zeros).
@@ -176,8 +186,11 @@ class SsrMethod final : public Method {
   std::string fallback_name_;
   int max_steps_;
   float thickness_, edge_fade_;
-  gpu::Program gbuffer_diffuse_, gbuffer_reflector_, program_;
+  gpu::Program gbuffer_diffuse_, gbuffer_reflector_;
+  // The probes the screen-space pass shows where the screen has no data: the fallback method
+  // keeps them up to date (update) and lends them (probeLookup); it never draws.
   std::unique_ptr<Method> fallback_;
+  gpu::Program program_;
   std::unique_ptr<GBuffer> gbuffer_;
   HiZPyramid hiz_;
   gpu::CounterSlots counts_{MIRAGE_SSR_COUNTS};

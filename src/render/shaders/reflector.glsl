@@ -5,6 +5,7 @@
 // MISS_DISTANCE when the ray leaves the scene). Defining MIRAGE_NO_REFLECTION before the include
 // shades reflectors with their base colour (method `none`).
 #include "render/shaders/surface.glsl"
+#include "render/shaders/probe_radiance.glsl"
 
 // Screen-space derivatives of the reflected direction, taken in uniform control flow so that
 // methods can filter lookups (textureGrad) inside loops and branches.
@@ -19,16 +20,6 @@ vec3 g_dPdy = vec3(0.0f);
 vec3 environment_radiance(vec3 direction) {
   if (frame.options.y != 0) return textureGrad(u_environment, direction, g_dRdx, g_dRdy).rgb;
   return textureLod(u_environment, direction, 0.0f).rgb;
-}
-
-// Cube `layer` of a cube-map array (a method's probes) along `direction`: rgb filtered by the
-// footprint (dx, dy) when mip-mapping is on, else level 0; alpha always level 0's (probes keep
-// the distance to what they saw there).
-vec4 probe_radiance(samplerCubeArray probes, vec3 direction, float layer, vec3 dx, vec3 dy) {
-  vec4 coords = vec4(direction, layer);
-  vec4 level0 = textureLod(probes, coords, 0.0f);
-  vec3 color = frame.options.y != 0 ? textureGrad(probes, coords, dx, dy).rgb : level0.rgb;
-  return vec4(color, level0.a);
 }
 
 #ifndef MIRAGE_NO_REFLECTION

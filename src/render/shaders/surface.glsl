@@ -34,14 +34,17 @@ vec3 surface_normal() {
 float eye_distance() { return length(v_in.world_position - frame.eye.xyz); }
 
 #ifdef MIRAGE_GBUFFER
-// A G-buffer pass (method `ssr`) also writes the surface's normal turned towards the viewer,
-// and in w a reflector's material index + 1 (0: a diffuse surface).
+#include "shading/octahedral.h"
+// A G-buffer pass (method `ssr`) also writes the surface's normal turned towards the viewer
+// (xy: octahedral_encode), and for a reflector its material index + 1 (z) and its reflector id
+// (w); both 0 on a diffuse surface.
 layout(location = 2) out vec4 out_normal;
 void write_gbuffer(bool reflector) {
   vec3 p = v_in.world_position;
   vec3 to_viewer = normalize(frame.eye.xyz - p);
   vec3 n = facing_normal(surface_normal(), cross(dFdx(p), dFdy(p)), to_viewer);
-  out_normal = vec4(n, reflector ? float(v_in.ids.x + 1) : 0.0f);
+  vec2 ids = reflector ? vec2(float(v_in.ids.x + 1), float(v_in.ids.y)) : vec2(0.0f);
+  out_normal = vec4(octahedral_encode(n), ids);
 }
 #else
 void write_gbuffer(bool reflector) {}

@@ -1,0 +1,25 @@
+#include "render/probe_lookup.h"
+
+#include "core/check.h"
+#include "shading/gpu_types.h"
+
+namespace mirage {
+
+std::vector<std::string> ProbeLookup::defines() const {
+  if (box) return {"PROBE_BOX 1"};
+  return {};
+}
+
+void ProbeLookup::bind(const gpu::Program& program) const {
+  MIRAGE_CHECK(probes != nullptr);
+  probes->bind(MIRAGE_UNIT_METHOD);
+  if (!box) return;
+  MIRAGE_CHECK(centres != nullptr);
+  centres->bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_METHOD_SSBO);
+  program.set("u_box_min", proxy.lo);
+  program.set("u_box_max", proxy.hi);
+  program.set("u_proxy_sphere", sphere_proxy ? 1 : 0);
+  program.set("u_sphere", vec4(proxy.center(), proxy.radius()));
+}
+
+}  // namespace mirage
