@@ -17,6 +17,10 @@
 #define MIRAGE_UNIT_ALBEDO 1       // the drawn instance's albedo texture
 #define MIRAGE_UNIT_NORMAL_MAP 2   // the drawn instance's normal map
 #define MIRAGE_UNIT_METHOD 4       // first unit a method may use
+// The reflector G-buffer's (render/reflector_gbuffer.h), for the screen-space reflector passes;
+// above every method's units.
+#define MIRAGE_UNIT_GBUFFER_NORMAL 14  // rgba32f: octahedral normal, material + 1, reflector id
+#define MIRAGE_UNIT_GBUFFER_DEPTH 15   // the frame's depth
 
 // Material kinds (MaterialData.kind.x).
 #define MIRAGE_MATERIAL_DIFFUSE 0

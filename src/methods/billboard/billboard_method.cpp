@@ -12,16 +12,14 @@ class BillboardMethod final : public Method {
   explicit BillboardMethod(const MethodSetup& setup)
       : stage_(billboardStageOptions(setup.params), setup.gpu.scene()),
         last_bounce_reflective_(lastBounceReflective(setup.params)),
-        program_(gpu::Program::graphics("render/shaders/scene.vert",
-                                        "methods/billboard/billboard.frag",
-                                        stage_.shaderDefines())),
+        program_(impostorProgram("methods/billboard/billboard.frag", stage_.shaderDefines())),
         base_program_(baseColourProgram()) {}
 
   void update(FrameContext& frame) override { stage_.update(frame); }
 
   void render(FrameContext& frame) override {
     if (!stage_.beginFrame(frame, program_, base_program_, last_bounce_reflective_)) return;
-    drawReflectorsOnce(frame, base_program_, program_);
+    drawReflectorsOnce(frame, gbuffer_, program_);
   }
 
   std::map<std::string, double> stats() const override { return stage_.stats(); }
@@ -30,6 +28,7 @@ class BillboardMethod final : public Method {
   BillboardStage stage_;
   bool last_bounce_reflective_;
   gpu::Program program_, base_program_;
+  ReflectorGBuffer gbuffer_;
 };
 
 }  // namespace

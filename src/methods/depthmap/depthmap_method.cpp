@@ -91,9 +91,8 @@ class DepthMapMethod final : public Method {
         capture_(options_, srdm_, setup.params.choice<SrdmBuilder>("srdm-builder", kSrdmBuilders)),
         recapture_(billboardRecapture(setup.params)),
         last_bounce_reflective_(lastBounceReflective(setup.params)),
-        program_(gpu::Program::graphics("render/shaders/scene.vert",
-                                        "methods/depthmap/depthmap.frag",
-                                        shaderDefines(specs_, setup.params, stage_))),
+        program_(impostorProgram("methods/depthmap/depthmap.frag",
+                                 shaderDefines(specs_, setup.params, stage_))),
         base_program_(baseColourProgram()) {}
 
   void update(FrameContext& frame) override {
@@ -137,7 +136,7 @@ class DepthMapMethod final : public Method {
     program_.set("u_depthmap_size", options_.size);
     program_.set("u_srdm_n", srdm_.domains);
     program_.set("u_srdm_m", srdm_.points);
-    drawReflectorsOnce(frame, base_program_, program_);
+    drawReflectorsOnce(frame, gbuffer_, program_);
   }
 
   std::map<std::string, double> stats() const override {
@@ -211,6 +210,7 @@ class DepthMapMethod final : public Method {
   RecapturePolicy recapture_;  // the colour maps' re-shading, as the billboards'
   bool last_bounce_reflective_;
   gpu::Program program_, base_program_;
+  ReflectorGBuffer gbuffer_;
   gpu::Buffer maps_, lists_;
   int last_captures_ = 0;
   bool updated_ = false;

@@ -104,21 +104,19 @@ BillboardStageOptions billboardStageOptions(const ParamValues& params) {
   return o;
 }
 
-void drawReflectorsOnce(const FrameContext& frame, const gpu::Program& depth_program,
+void drawReflectorsOnce(FrameContext& frame, ReflectorGBuffer& gbuffer,
                         const gpu::Program& program) {
-  glColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  frame.drawOwnReflectors(depth_program);
-  glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  glDepthFunc(GL_LEQUAL);
-  glDepthMask(GL_FALSE);
-  frame.drawOwnReflectors(program);
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_TRUE);
+  gbuffer.begin(frame.target, frame.passes, frame.view, frame.settings);
+  frame.drawOwnReflectors(gbuffer.reflectorProgram());
+  gbuffer.shade(frame.target, frame.passes, frame.view, frame.settings, program);
   // The counts are the fragment shader's atomics: glGetNamedBufferSubData sees them only
   // behind this barrier (as ssr's).
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+gpu::Program impostorProgram(const char* fragment, std::vector<std::string> defines) {
+  defines.push_back("MIRAGE_REFLECTOR_SCREEN 1");
+  return gpu::Program::graphics("render/shaders/fullscreen.vert", fragment, defines);
 }
 
 BillboardStage::BillboardStage(const BillboardStageOptions& options, const Scene& scene)

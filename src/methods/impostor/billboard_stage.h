@@ -19,6 +19,7 @@
 #include "methods/impostor/impostor_groups.h"
 #include "methods/method.h"
 #include "render/cube_capture.h"
+#include "render/reflector_gbuffer.h"
 
 namespace mirage {
 
@@ -39,12 +40,15 @@ GroupCaps impostorGroupCaps(const BillboardStageOptions& options);
 // --last-bounce all: the last bounce tests reflective billboards too (a hit shows its base colour).
 bool lastBounceReflective(const ParamValues& params);
 
-// Draws the reflectors' depth with `depth_program` (colour writes off), then `program` once per
-// visible reflector pixel (depth test LEQUAL, no depth writes): the expensive shader runs once
-// per pixel, with no overdraw. Only the frame's own reflectors (FrameContext::own). Ends with
+// Draws the frame's own reflectors (FrameContext::own) into `gbuffer` at their base colour, then
+// shades their pixels with `program`, a screen-space pass (impostorProgram): the expensive
+// shader runs once per visible pixel, after one pass over the reflectors' triangles. Ends with
 // the barrier that lets the stage read the trace's counts back (stats()).
-void drawReflectorsOnce(const FrameContext& frame, const gpu::Program& depth_program,
+void drawReflectorsOnce(FrameContext& frame, ReflectorGBuffer& gbuffer,
                         const gpu::Program& program);
+// An impostor method's reflector shader `fragment` (which includes impostor_trace.glsl),
+// compiled as the screen-space pass drawReflectorsOnce runs, with `defines`.
+gpu::Program impostorProgram(const char* fragment, std::vector<std::string> defines);
 
 class BillboardStage {
  public:

@@ -12,13 +12,12 @@
 #include "methods/ssr/ssr_shared.h"
 #include "render/shaders/counter_slots.glsl"
 #include "render/shaders/probe_lookup.glsl"
-#include "shading/octahedral.h"
+#include "render/shaders/gbuffer.glsl"
 
 layout(location = 0) out vec4 out_color;
 
 layout(binding = MIRAGE_UNIT_SSR_HIZ) uniform sampler2D u_hiz;
 layout(binding = MIRAGE_UNIT_SSR_COLOR) uniform sampler2D u_color;
-layout(binding = MIRAGE_UNIT_SSR_NORMAL) uniform sampler2D u_normal;
 layout(std430, binding = MIRAGE_BIND_SSR_COUNTS) buffer SsrCounts {
   uint ssr_counts[MIRAGE_COUNTER_SLOTS * MIRAGE_COUNTER_SLOT_WORDS];
 };
@@ -46,11 +45,6 @@ vec3 to_window(vec3 world) {
   return vec3((ndc.xy * 0.5f + 0.5f) * vec2(u_size), ndc.z * 0.5f + 0.5f);
 }
 
-vec3 to_world(vec3 window) {
-  vec4 ndc = vec4(window.xy / vec2(u_size) * 2.0f - 1.0f, window.z * 2.0f - 1.0f, 1.0f);
-  vec4 world = frame.inv_view_proj * ndc;
-  return world.xyz / world.w;
-}
 
 // One atomic a pixel (and one more in the fade), into the pixel's slot (counter_slots.glsl): the
 // pixel count and the fallback's whole pixels are sums of these on the CPU.
@@ -89,7 +83,7 @@ vec4 reflected_radiance(vec3 from, vec3 position, vec3 direction) {
       count(MIRAGE_SSR_OFF_SCREEN);
     else
       count(MIRAGE_SSR_NO_HIT);
-  } else if (dot(octahedral_decode(texelFetch(u_normal, pixel, 0).xy), direction) > 0.0f) {
+  } else if (dot(octahedral_decode(texelFetch(u_gbuffer_normal, pixel, 0).xy), direction) > 0.0f) {
     count(MIRAGE_SSR_BACK_FACE);
   } else {
     float exit_t = ssr_cell_exit(from, to, t, 1.0f);
@@ -105,34 +99,22 @@ vec4 reflected_radiance(vec3 from, vec3 position, vec3 direction) {
       atomicAdd(ssr_counts[counter_slot() + MIRAGE_SSR_FADED_WEIGHT],
                 uint((1.0f - g_coverage) * 1024.0f + 0.5f));
     }
-    vec3 hit = to_world(vec3(at.xy, ssr_bilinear_depth(at.xy, u_size)));
+    vec3 hit = gbuffer_world(vec3(at.xy, ssr_bilinear_depth(at.xy, u_size)));
     return vec4(textureLod(u_color, at.xy / vec2(u_size), 0.0f).rgb, length(hit - position));
   }
   return vec4(0.0f, 0.0f, 0.0f, MISS_DISTANCE);
 }
 
-// The derivatives of the reflected direction r across the pixel's 2x2 quad, for the probe's
-// filter. Taken before any lane leaves (uniform control flow); a neighbour on another reflector
-// (or none) says nothing of this one's r: that axis then borrows the other's, and with neither
-// the lookup is at full resolution (a pixel whose quad holds no other pixel of its reflector).
-void reflected_footprint(vec3 r, float reflector, out vec3 dx, out vec3 dy) {
-  dx = dFdxFine(r);
-  dy = dFdyFine(r);
-  bool x_same = dFdxFine(reflector) == 0.0f, y_same = dFdyFine(reflector) == 0.0f;
-  if (!x_same) dx = y_same ? dy : vec3(0.0f);
-  if (!y_same) dy = x_same ? dx : vec3(0.0f);
-}
-
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  vec4 g = texelFetch(u_normal, pixel, 0);
+  vec4 g = texelFetch(u_gbuffer_normal, pixel, 0);
   vec3 window = vec3(gl_FragCoord.xy, texelFetch(u_hiz, pixel, 0).r);
-  vec3 p = to_world(window);
+  vec3 p = gbuffer_world(window);
   vec3 n = octahedral_decode(g.xy);
   vec3 to_viewer = normalize(frame.eye.xyz - p);
   vec3 r = reflect_direction(-to_viewer, n);
   vec3 dx, dy;
-  reflected_footprint(r, g.w, dx, dy);
+  gbuffer_differentials(r, g.w, dx, dy);
   if (g.z < 0.5f) discard;  // not one of this method's reflectors
   MaterialData m = materials[int(g.z + 0.5f) - 1];
   vec4 reflected = reflected_radiance(window, p, r);

@@ -10,40 +10,27 @@
 #include "methods/ssr/ssr_shared.h"
 #include "render/frame_target.h"
 #include "render/probe_lookup.h"
+#include "render/reflector_gbuffer.h"
 
 namespace mirage {
 
 namespace {
 
-// What the screen-space pass reads beside the pyramid: the direct view's colour with the
-// reflectors at their base colour (a hit on a reflector shows what order 1 shows there), and
-// normals facing the viewer (render/shaders/surface.glsl: xy the octahedral normal, z a
-// reflector's material + 1, w its reflector id; z 0 elsewhere: the pixels the pass shades). They
-// are drawn first, straight into the frame with the normals beside (`direct`: what method `none`
-// draws); the frame's colour is copied for the march, and the pass then shades the reflector
-// pixels over their base colour.
-struct GBuffer {
-  GBuffer(ivec2 s, const FrameTarget& target)
-      : size(s), depth_id(target.depth().id()), color_id(target.color().id()) {
+// What the screen-space pass reads beside the pyramid and the reflector G-buffer
+// (render/reflector_gbuffer.h, which ssr draws the diffuse surfaces into too: a hit's normal
+// tells a back face): the direct view's colour with the reflectors at their base colour (a hit
+// on a reflector shows what order 1 shows there), copied from the frame.
+struct ColorCopy {
+  ColorCopy(ivec2 s, const FrameTarget& target) : size(s), color_id(target.color().id()) {
     color = gpu::Texture::create2D(GL_RGBA32F, s.x, s.y);  // the frame's format: copied from it
-    // Full floats: the screen-space pass reflects about this normal, and z, w hold whole numbers.
-    normal = gpu::Texture::create2D(GL_RGBA32F, s.x, s.y);
-    normal.setFilter(GL_NEAREST, GL_NEAREST);
     color.setFilter(GL_LINEAR, GL_LINEAR);  // read at the refined hit, between pixel centres
-    direct.attachColor(0, target.color());
-    direct.attachColor(1, target.ids());
-    direct.attachColor(2, normal);
-    direct.attachDepth(target.depth());
-    direct.setDrawBuffers(3);
-    direct.checkComplete("ssr direct view");
   }
   bool fits(ivec2 s, const FrameTarget& target) const {
-    return size == s && depth_id == target.depth().id() && color_id == target.color().id();
+    return size == s && color_id == target.color().id();
   }
   ivec2 size;
-  GLuint depth_id, color_id;
-  gpu::Texture color, normal;
-  gpu::Framebuffer direct;
+  GLuint color_id;
+  gpu::Texture color;
 };
 
 // Draws with the depth test EQUAL and no depth writes while it lives: the surfaces already in
@@ -90,8 +77,6 @@ class SsrMethod final : public Method {
         edge_fade_(float(setup.params.real("ssr-edge-fade"))),
         gbuffer_diffuse_(gpu::Program::graphics(
             "render/shaders/scene.vert", "render/shaders/diffuse.frag", {"MIRAGE_GBUFFER 1"})),
-        gbuffer_reflector_(gpu::Program::graphics(
-            "render/shaders/scene.vert", "methods/ssr/ssr_gbuffer.frag", {"MIRAGE_GBUFFER 1"})),
         fallback_(makeFallback(setup)),
         program_(gpu::Program::graphics("render/shaders/fullscreen.vert", "methods/ssr/ssr.frag",
                                         fallbackDefines(fallback_name_))) {}
@@ -100,11 +85,11 @@ class SsrMethod final : public Method {
 
   void render(FrameContext& frame) override {
     const ivec2 size = frame.view.size();
-    if (!gbuffer_ || !gbuffer_->fits(size, frame.target))
-      gbuffer_ = std::make_unique<GBuffer>(size, frame.target);
+    if (!copy_ || !copy_->fits(size, frame.target))
+      copy_ = std::make_unique<ColorCopy>(size, frame.target);
     drawGBuffer(frame);
     if (frame.settings.order > 0)
-      glCopyImageSubData(frame.target.color().id(), GL_TEXTURE_2D, 0, 0, 0, 0, gbuffer_->color.id(),
+      glCopyImageSubData(frame.target.color().id(), GL_TEXTURE_2D, 0, 0, 0, 0, copy_->color.id(),
                          GL_TEXTURE_2D, 0, 0, 0, 0, size.x, size.y, 1);
     frame.beginPart(gpu::Part::kReflect);
     // Order 0: the reflectors keep the base colour the G-buffer drew them with.
@@ -113,11 +98,8 @@ class SsrMethod final : public Method {
     hiz_.build(frame.target.depth(), size,
                HiZDepthRange{thickness_, frame.view.nearPlane(), frame.view.farPlane()});
 
-    frame.target.bind();
-    frame.passes.begin(frame.view, frame.settings);
     hiz_.texture().bind(MIRAGE_UNIT_SSR_HIZ);
-    gbuffer_->color.bind(MIRAGE_UNIT_SSR_COLOR);
-    gbuffer_->normal.bind(MIRAGE_UNIT_SSR_NORMAL);
+    copy_->color.bind(MIRAGE_UNIT_SSR_COLOR);
     probes->bind(program_);
     counts_.resetAndBind(MIRAGE_BIND_SSR_COUNTS);
     program_.set("u_size", size);
@@ -129,11 +111,7 @@ class SsrMethod final : public Method {
     program_.set("u_forward", frame.view.forward());
     // Over the reflector pixels of the G-buffer; the target's alpha (eye distance) and reflector
     // ids are kept.
-    glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
-    glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    frame.passes.drawFullscreen(program_);
-    glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    gbuffer_.shade(frame.target, frame.passes, frame.view, frame.settings, program_);
     // The counts are atomics of the fragment shader: stats() reads them with
     // glGetNamedBufferSubData, which GL orders after the draw only behind this barrier (without
     // it, and without a glFinish between, llvmpipe returned zeros).
@@ -145,19 +123,16 @@ class SsrMethod final : public Method {
   // The direct part and the reflectors at their base colour into the frame, with the normals
   // beside. Inside `mixed` the frame holds the direct part already (frame.direct false): then
   // the diffuse surfaces there are drawn again for their normals, the same colour over the same.
-  void drawGBuffer(FrameContext& frame) const {
+  void drawGBuffer(FrameContext& frame) {
     if (frame.direct) frame.passes.drawBackground();
-    gbuffer_->direct.bind();
-    frame.passes.begin(frame.view, frame.settings);
-    const float zero[4] = {0, 0, 0, 0};
-    glClearNamedFramebufferfv(gbuffer_->direct.id(), GL_COLOR, 2, zero);
+    gbuffer_.begin(frame.target, frame.passes, frame.view, frame.settings);
     if (frame.direct) {
       frame.passes.drawDiffuseWith(gbuffer_diffuse_);
     } else {
       DepthEqual equal;
       frame.passes.drawDiffuseWith(gbuffer_diffuse_);
     }
-    frame.drawOwnReflectors(gbuffer_reflector_);  // inside `mixed`, the others draw theirs
+    frame.drawOwnReflectors(gbuffer_.reflectorProgram());  // inside `mixed`, the others draw theirs
   }
 
   std::map<std::string, double> stats() const override {
@@ -186,12 +161,13 @@ class SsrMethod final : public Method {
   std::string fallback_name_;
   int max_steps_;
   float thickness_, edge_fade_;
-  gpu::Program gbuffer_diffuse_, gbuffer_reflector_;
+  gpu::Program gbuffer_diffuse_;
   // The probes the screen-space pass shows where the screen has no data: the fallback method
   // keeps them up to date (update) and lends them (probeLookup); it never draws.
   std::unique_ptr<Method> fallback_;
   gpu::Program program_;
-  std::unique_ptr<GBuffer> gbuffer_;
+  ReflectorGBuffer gbuffer_;
+  std::unique_ptr<ColorCopy> copy_;
   HiZPyramid hiz_;
   gpu::CounterSlots counts_{MIRAGE_SSR_COUNTS};
 };

@@ -5,7 +5,6 @@
 // Texture units after MIRAGE_UNIT_METHOD (4), which the fallback method's probes hold.
 #define MIRAGE_UNIT_SSR_HIZ 5     // rg32f, mip levels: the hierarchical-Z pyramid, every level
 #define MIRAGE_UNIT_SSR_COLOR 6   // rgba16f: the direct view's colour (reflectors at base colour)
-#define MIRAGE_UNIT_SSR_NORMAL 7  // rgba32f: xyz the normal facing the viewer, w material + 1
 #define MIRAGE_UNIT_SSR_DEPTH 8   // the frame's depth: the pyramid build's input
 #define MIRAGE_BIND_SSR_COUNTS 5  // uint[MIRAGE_SSR_COUNTS]: the last frame's counts (below)
 #define MIRAGE_IMAGE_SSR_LEVEL_IN 0

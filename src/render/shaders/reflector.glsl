@@ -3,28 +3,19 @@
 //     vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflector);
 // returning the radiance arriving along the reflected ray (rgb) and the hit distance (a;
 // MISS_DISTANCE when the ray leaves the scene). Defining MIRAGE_NO_REFLECTION before the include
-// shades reflectors with their base colour (method `none`).
+// shades reflectors with their base colour (method `none`). Compiled with
+// MIRAGE_REFLECTOR_SCREEN, the same shader is a screen-space pass over the reflector G-buffer
+// (reflector_screen.glsl, under render/shaders/fullscreen.vert) instead of a pass over the
+// reflectors' triangles.
+// The include resolver expands every #include once, where it first appears, whatever the #if
+// around it: what both passes need comes first, unconditionally.
+#include "render/shaders/common.glsl"
+#include "render/shaders/reflection.glsl"
+#include "shading/octahedral.h"
+#ifdef MIRAGE_REFLECTOR_SCREEN
+#include "render/shaders/reflector_screen.glsl"
+#else
 #include "render/shaders/surface.glsl"
-#include "render/shaders/probe_radiance.glsl"
-
-// Screen-space derivatives of the reflected direction, taken in uniform control flow so that
-// methods can filter lookups (textureGrad) inside loops and branches.
-vec3 g_dRdx = vec3(0.0f);
-vec3 g_dRdy = vec3(0.0f);
-// ... and of the shaded point: with the direction's, the reflected ray's differential.
-vec3 g_dPdx = vec3(0.0f);
-vec3 g_dPdy = vec3(0.0f);
-
-// The scene's distant environment along `direction`, filtered by the reflected ray's footprint
-// when mip-mapping is on.
-vec3 environment_radiance(vec3 direction) {
-  if (frame.options.y != 0) return textureGrad(u_environment, direction, g_dRdx, g_dRdy).rgb;
-  return textureLod(u_environment, direction, 0.0f).rgb;
-}
-
-#ifndef MIRAGE_NO_REFLECTION
-vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflector);
-#endif
 
 void main() {
   MaterialData m = surface_material();
@@ -48,3 +39,4 @@ void main() {
   out_color = vec4(shaded, eye_distance());
 #endif
 }
+#endif

@@ -1,5 +1,6 @@
 // Fragment-side inputs of a scene surface and the lookups of its material's textures.
 #include "render/shaders/common.glsl"
+#include "shading/octahedral.h"
 
 in SurfaceData {
   vec3 world_position;
@@ -34,7 +35,6 @@ vec3 surface_normal() {
 float eye_distance() { return length(v_in.world_position - frame.eye.xyz); }
 
 #ifdef MIRAGE_GBUFFER
-#include "shading/octahedral.h"
 // A G-buffer pass (method `ssr`) also writes the surface's normal turned towards the viewer
 // (xy: octahedral_encode), and for a reflector its material index + 1 (z) and its reflector id
 // (w); both 0 on a diffuse surface.
