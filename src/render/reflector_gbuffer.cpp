@@ -1,5 +1,8 @@
 #include "render/reflector_gbuffer.h"
 
+#include <algorithm>
+#include <limits>
+
 #include "shading/gpu_types.h"
 
 namespace mirage {
@@ -40,14 +43,49 @@ void ReflectorGBuffer::begin(FrameTarget& target, ScenePasses& passes, const Vie
 }
 
 void ReflectorGBuffer::shade(const FrameTarget& target, ScenePasses& passes, const View& view,
-                             const FrameSettings& settings, const gpu::Program& program) const {
+                             const FrameSettings& settings, const gpu::Program& program,
+                             const std::vector<int>* own) const {
   shading_.bind();
   passes.begin(view, settings);
   normals_.bind(MIRAGE_UNIT_GBUFFER_NORMAL);
   target.depth().bind(MIRAGE_UNIT_GBUFFER_DEPTH);
   glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
-  passes.drawFullscreen(program);
+  glEnable(GL_SCISSOR_TEST);
+  const std::vector<int> reflectors = passes.scene().scene().reflectorInstances();
+  for (size_t k = 0; k < reflectors.size(); ++k) {
+    const int instance = reflectors[k];
+    if (own && std::find(own->begin(), own->end(), instance) == own->end()) continue;
+    const ivec4 r = screenRectangle(passes.scene().instanceBounds(instance), view);
+    if (r.x >= r.z || r.y >= r.w) continue;
+    glScissor(r.x, r.y, r.z - r.x, r.w - r.y);
+    program.set("u_gbuffer_reflector", int(k) + 1);
+    passes.drawFullscreen(program);
+  }
+  glDisable(GL_SCISSOR_TEST);
   glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+ivec4 screenRectangle(const Bounds3& bounds, const View& view) {
+  const ivec2 size = view.size();
+  const ivec4 whole(0, 0, size.x, size.y);
+  if (bounds.empty()) return ivec4(0);
+  const mat4 m = view.viewProjection();
+  vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+  for (int c = 0; c < 8; ++c) {
+    const vec3 p((c & 1) ? bounds.hi.x : bounds.lo.x, (c & 2) ? bounds.hi.y : bounds.lo.y,
+                 (c & 4) ? bounds.hi.z : bounds.lo.z);
+    const vec4 clip = m * vec4(p, 1.0f);
+    if (clip.w <= 1e-6f) return whole;  // reaches behind the eye: its projection is unbounded
+    const vec2 ndc = vec2(clip) / clip.w;
+    lo = glm::min(lo, ndc);
+    hi = glm::max(hi, ndc);
+  }
+  const vec2 px_lo = (lo * 0.5f + 0.5f) * vec2(size), px_hi = (hi * 0.5f + 0.5f) * vec2(size);
+  // A pixel of margin, then out to even coordinates: whole quads.
+  ivec2 a = ivec2(glm::floor(px_lo)) - 1, b = ivec2(glm::ceil(px_hi)) + 1;
+  a = glm::max(a - (a & 1), ivec2(0));
+  b = glm::min(b + (b & 1), size);
+  return ivec4(a, b);
 }
 
 }  // namespace mirage

@@ -8,6 +8,8 @@
 // MIRAGE_REFLECTOR_SCREEN (render/shaders/reflector_screen.glsl) under fullscreen.vert.
 #pragma once
 
+#include <vector>
+
 #include "core/camera.h"
 #include "core/frame_settings.h"
 #include "gpu/framebuffer.h"
@@ -17,6 +19,11 @@
 #include "render/scene_passes.h"
 
 namespace mirage {
+
+// The pixels of `view` that the box `bounds` can cover, as (x0, y0, x1, y1), x1 and y1 past the
+// end, widened to whole 2x2 quads (the differentials read a pixel's quad neighbours); the whole
+// view when the box reaches behind the eye. Empty (x0 >= x1) when it is off the screen.
+ivec4 screenRectangle(const Bounds3& bounds, const View& view);
 
 class ReflectorGBuffer {
  public:
@@ -30,11 +37,16 @@ class ReflectorGBuffer {
   // Reflectors at their base colour with their normals, materials and ids (base_colour.frag
   // under MIRAGE_GBUFFER).
   const gpu::Program& reflectorProgram() const { return reflector_program_; }
-  // The screen-space pass `program` over the frame: the normals and the depth bound for
-  // gbuffer.glsl, drawn into the target's colour with its alpha (the eye distance) masked; the
-  // depth is read, not attached.
+  // The screen-space pass `program` over the pixels of the reflectors `own` (instances; null:
+  // every reflector): the normals and the depth bound for gbuffer.glsl, drawn into the target's
+  // colour with its alpha (the eye distance) masked; the depth is read, not attached. One draw a
+  // reflector, scissored to its bounds' screen rectangle (u_gbuffer_reflector: the pass shades
+  // that reflector's pixels only): llvmpipe runs a screen-space shader over every pixel it
+  // covers, discarded or not, so a pass over the whole screen cost more than the triangle pass
+  // it replaced where the reflectors cover little of it (teapots4).
   void shade(const FrameTarget& target, ScenePasses& passes, const View& view,
-             const FrameSettings& settings, const gpu::Program& program) const;
+             const FrameSettings& settings, const gpu::Program& program,
+             const std::vector<int>* own) const;
 
   const gpu::Texture& normals() const { return normals_; }
 

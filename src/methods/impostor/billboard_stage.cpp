@@ -108,7 +108,7 @@ void drawReflectorsOnce(FrameContext& frame, ReflectorGBuffer& gbuffer,
                         const gpu::Program& program) {
   gbuffer.begin(frame.target, frame.passes, frame.view, frame.settings);
   frame.drawOwnReflectors(gbuffer.reflectorProgram());
-  gbuffer.shade(frame.target, frame.passes, frame.view, frame.settings, program);
+  gbuffer.shade(frame.target, frame.passes, frame.view, frame.settings, program, frame.own);
   // The counts are the fragment shader's atomics: glGetNamedBufferSubData sees them only
   // behind this barrier (as ssr's).
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);

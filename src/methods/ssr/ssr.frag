@@ -115,7 +115,7 @@ void main() {
   vec3 r = reflect_direction(-to_viewer, n);
   vec3 dx, dy;
   gbuffer_differentials(r, g.w, dx, dy);
-  if (g.z < 0.5f) discard;  // not one of this method's reflectors
+  if (!gbuffer_shades(g)) discard;  // not the draw's reflector
   MaterialData m = materials[int(g.z + 0.5f) - 1];
   vec4 reflected = reflected_radiance(window, p, r);
   float cos_theta = max(dot(n, to_viewer), 0.0f);

@@ -6,6 +6,12 @@
 
 layout(binding = MIRAGE_UNIT_GBUFFER_NORMAL) uniform sampler2D u_gbuffer_normal;
 layout(binding = MIRAGE_UNIT_GBUFFER_DEPTH) uniform sampler2D u_gbuffer_depth;
+// The reflector id a draw of the pass shades (ReflectorGBuffer::shade: one draw a reflector,
+// scissored to it).
+uniform int u_gbuffer_reflector;
+
+// Whether the pass shades G-buffer texel g: a pixel of the draw's reflector.
+bool gbuffer_shades(vec4 g) { return g.z >= 0.5f && int(g.w + 0.5f) == u_gbuffer_reflector; }
 
 // The world point at window position `window` (pixels, and window depth in z).
 vec3 gbuffer_world(vec3 window) {

@@ -20,7 +20,7 @@ void main() {
   vec3 r = reflect_direction(-to_viewer, n);
   gbuffer_differentials(r, g.w, g_dRdx, g_dRdy);
   gbuffer_differentials(p, g.w, g_dPdx, g_dPdy);
-  if (g.z < 0.5f) discard;  // no reflector of this pass here
+  if (!gbuffer_shades(g)) discard;  // not the draw's reflector
   MaterialData m = materials[int(g.z + 0.5f) - 1];
   vec4 reflected = reflected_radiance(p, r, n, int(g.w + 0.5f));
   float cos_theta = max(dot(n, to_viewer), 0.0f);
