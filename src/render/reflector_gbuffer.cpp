@@ -42,9 +42,51 @@ void ReflectorGBuffer::begin(FrameTarget& target, ScenePasses& passes, const Vie
   glClearNamedFramebufferfv(with_depth_.id(), GL_COLOR, 2, zero);
 }
 
+ReflectorPlan ReflectorGBuffer::plan(const GpuScene& gpu, const View& view,
+                                     const ShadeOptions& options) const {
+  const Scene& scene = gpu.scene();
+  const std::vector<int> reflectors = scene.reflectorInstances();
+  ReflectorPlan plan;
+  plan.screen.assign(reflectors.size(), ivec4(0));
+  plan.triangles.assign(reflectors.size(), ivec4(0));
+  for (size_t k = 0; k < reflectors.size(); ++k) {
+    const int instance = reflectors[k];
+    const std::vector<int>* own = options.own;
+    if (own && std::find(own->begin(), own->end(), instance) == own->end()) continue;
+    const ivec4 r = screenRectangle(gpu.instanceBounds(instance), view);
+    if (r.x >= r.z || r.y >= r.w) continue;
+    const Mesh& mesh = scene.meshes[size_t(scene.instances[size_t(instance)].mesh)];
+    const bool by_screen =
+        !options.triangles || options.pass == ReflectorPass::kScreen ||
+        (options.pass == ReflectorPass::kAuto && screenPassPays(mesh.triangleCount(), r));
+    (by_screen ? plan.screen : plan.triangles)[k] = r;
+    (by_screen ? plan.taken.screen : plan.taken.triangles) += 1;
+  }
+  return plan;
+}
+
 void ReflectorGBuffer::shade(const FrameTarget& target, ScenePasses& passes, const View& view,
                              const FrameSettings& settings, const gpu::Program& program,
-                             const std::vector<int>* own) const {
+                             const ShadeOptions& options) const {
+  ShadeOptions screen_only = options;
+  screen_only.triangles = nullptr;
+  shade(target, passes, view, settings, program, screen_only,
+        plan(passes.scene(), view, screen_only));
+}
+
+void ReflectorGBuffer::shade(const FrameTarget& target, ScenePasses& passes, const View& view,
+                             const FrameSettings& settings, const gpu::Program& program,
+                             const ShadeOptions& options, const ReflectorPlan& plan) const {
+  if (plan.taken.screen > 0)
+    drawScreen(target, passes, view, settings, program, options, plan.screen);
+  if (plan.taken.triangles > 0)
+    drawTriangles(target, passes, view, settings, *options.triangles, options, plan.triangles);
+}
+
+void ReflectorGBuffer::drawScreen(const FrameTarget& target, ScenePasses& passes, const View& view,
+                                  const FrameSettings& settings, const gpu::Program& program,
+                                  const ShadeOptions& options,
+                                  const std::vector<ivec4>& rectangles) const {
   shading_.bind();
   passes.begin(view, settings);
   normals_.bind(MIRAGE_UNIT_GBUFFER_NORMAL);
@@ -53,16 +95,43 @@ void ReflectorGBuffer::shade(const FrameTarget& target, ScenePasses& passes, con
   glEnable(GL_SCISSOR_TEST);
   const std::vector<int> reflectors = passes.scene().scene().reflectorInstances();
   for (size_t k = 0; k < reflectors.size(); ++k) {
-    const int instance = reflectors[k];
-    if (own && std::find(own->begin(), own->end(), instance) == own->end()) continue;
-    const ivec4 r = screenRectangle(passes.scene().instanceBounds(instance), view);
+    const ivec4 r = rectangles[k];
     if (r.x >= r.z || r.y >= r.w) continue;
     glScissor(r.x, r.y, r.z - r.x, r.w - r.y);
     program.set("u_gbuffer_reflector", int(k) + 1);
+    if (options.each) options.each(reflectors[k]);
     passes.drawFullscreen(program);
   }
   glDisable(GL_SCISSOR_TEST);
   glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+void ReflectorGBuffer::drawTriangles(const FrameTarget& target, ScenePasses& passes,
+                                     const View& view, const FrameSettings& settings,
+                                     const gpu::Program& program, const ShadeOptions& options,
+                                     const std::vector<ivec4>& rectangles) {
+  // Over the depth drawn before, on the same vertex shader (invariant): the visible pixels
+  // alone pass GL_LEQUAL. The colour (its alpha the eye distance) and the ids are written whole,
+  // as a pass over the triangles writes them.
+  target.bind();
+  passes.begin(view, settings);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_FALSE);
+  const std::vector<int> reflectors = passes.scene().scene().reflectorInstances();
+  for (size_t k = 0; k < reflectors.size(); ++k) {
+    const ivec4 r = rectangles[k];
+    if (r.x >= r.z || r.y >= r.w) continue;
+    if (options.each) options.each(reflectors[k]);
+    passes.drawReflectorInstances(program, std::span<const int>(&reflectors[k], 1));
+  }
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+}
+
+bool screenPassPays(size_t triangles, const ivec4& rectangle) {
+  const double area = double(std::max(rectangle.z - rectangle.x, 0)) *
+                      double(std::max(rectangle.w - rectangle.y, 0));
+  return area <= kScreenPassPixelsPerTriangle * double(triangles);
 }
 
 ivec4 screenRectangle(const Bounds3& bounds, const View& view) {

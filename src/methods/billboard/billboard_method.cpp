@@ -12,23 +12,31 @@ class BillboardMethod final : public Method {
   explicit BillboardMethod(const MethodSetup& setup)
       : stage_(billboardStageOptions(setup.params), setup.gpu.scene()),
         last_bounce_reflective_(lastBounceReflective(setup.params)),
-        program_(impostorProgram("methods/billboard/billboard.frag", stage_.shaderDefines())),
+        shader_("methods/billboard/billboard.frag", stage_.shaderDefines(),
+                impostorPass(setup.params)),
         base_program_(baseColourProgram()) {}
 
   void update(FrameContext& frame) override { stage_.update(frame); }
 
   void render(FrameContext& frame) override {
-    if (!stage_.beginFrame(frame, program_, base_program_, last_bounce_reflective_)) return;
-    drawReflectorsOnce(frame, gbuffer_, program_);
+    passes_ = {};
+    if (!stage_.beginFrame(frame, shader_, base_program_, last_bounce_reflective_)) return;
+    passes_ = shader_.draw(frame, gbuffer_);
   }
 
-  std::map<std::string, double> stats() const override { return stage_.stats(); }
+  std::map<std::string, double> stats() const override {
+    std::map<std::string, double> s = stage_.stats();
+    addPassStats(s, passes_);
+    return s;
+  }
 
  private:
   BillboardStage stage_;
   bool last_bounce_reflective_;
-  gpu::Program program_, base_program_;
+  ImpostorShader shader_;
+  gpu::Program base_program_;
   ReflectorGBuffer gbuffer_;
+  ReflectorPasses passes_;  // the last frame's
 };
 
 }  // namespace

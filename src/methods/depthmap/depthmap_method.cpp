@@ -91,8 +91,8 @@ class DepthMapMethod final : public Method {
         capture_(options_, srdm_, setup.params.choice<SrdmBuilder>("srdm-builder", kSrdmBuilders)),
         recapture_(billboardRecapture(setup.params)),
         last_bounce_reflective_(lastBounceReflective(setup.params)),
-        program_(impostorProgram("methods/depthmap/depthmap.frag",
-                                 shaderDefines(specs_, setup.params, stage_))),
+        shader_("methods/depthmap/depthmap.frag", shaderDefines(specs_, setup.params, stage_),
+                impostorPass(setup.params)),
         base_program_(baseColourProgram()) {}
 
   void update(FrameContext& frame) override {
@@ -127,20 +127,22 @@ class DepthMapMethod final : public Method {
   }
 
   void render(FrameContext& frame) override {
-    if (!stage_.beginFrame(frame, program_, base_program_, last_bounce_reflective_)) return;
+    passes_ = {};
+    if (!stage_.beginFrame(frame, shader_, base_program_, last_bounce_reflective_)) return;
     maps_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_DEPTHMAPS);
     lists_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_DEPTHMAP_LISTS);
     capture_.colors().bind(MIRAGE_UNIT_DEPTHMAP_COLOR);
     capture_.srdms().bind(MIRAGE_UNIT_DEPTHMAP_SRDM);
     capture_.depths().bind(MIRAGE_UNIT_DEPTHMAP_DEPTH);
-    program_.set("u_depthmap_size", options_.size);
-    program_.set("u_srdm_n", srdm_.domains);
-    program_.set("u_srdm_m", srdm_.points);
-    drawReflectorsOnce(frame, gbuffer_, program_);
+    shader_.set("u_depthmap_size", options_.size);
+    shader_.set("u_srdm_n", srdm_.domains);
+    shader_.set("u_srdm_m", srdm_.points);
+    passes_ = shader_.draw(frame, gbuffer_);
   }
 
   std::map<std::string, double> stats() const override {
     std::map<std::string, double> out = stage_.stats();
+    addPassStats(out, passes_);
     out["depth_maps"] = double(specs_.size());
     out["depthmap_groups"] = double(grouping_.groups.size());
     out["depthmap_objects"] = double(grouping_.objects);
@@ -209,8 +211,10 @@ class DepthMapMethod final : public Method {
   DepthMapCapture capture_;
   RecapturePolicy recapture_;  // the colour maps' re-shading, as the billboards'
   bool last_bounce_reflective_;
-  gpu::Program program_, base_program_;
+  ImpostorShader shader_;
+  gpu::Program base_program_;
   ReflectorGBuffer gbuffer_;
+  ReflectorPasses passes_;  // the last frame's
   gpu::Buffer maps_, lists_;
   int last_captures_ = 0;
   bool updated_ = false;

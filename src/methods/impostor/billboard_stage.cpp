@@ -83,7 +83,8 @@ std::vector<ParamSpec> billboardStageParams() {
       ParamSpec::integer("impostor-cells", 0, 16, 8,
                          "a reflector keeps its lists per cell of the directions its rays "
                          "leave along (N x N cells a cube face): each without the impostors "
-                         "that no ray of the cell can reach (0: one list, every direction)")};
+                         "that no ray of the cell can reach (0: one list, every direction)"),
+      impostorPassParam()};
   for (ParamSpec& spec : billboardRecaptureParams()) params.push_back(std::move(spec));
   return params;
 }
@@ -102,21 +103,6 @@ BillboardStageOptions billboardStageOptions(const ParamValues& params) {
   o.groups = parseGroupSetting(params.text("impostor-groups"), "--impostor-groups");
   o.memory_cap = uint64_t(params.integer("impostor-memory")) << 20;
   return o;
-}
-
-void drawReflectorsOnce(FrameContext& frame, ReflectorGBuffer& gbuffer,
-                        const gpu::Program& program) {
-  gbuffer.begin(frame.target, frame.passes, frame.view, frame.settings);
-  frame.drawOwnReflectors(gbuffer.reflectorProgram());
-  gbuffer.shade(frame.target, frame.passes, frame.view, frame.settings, program, frame.own);
-  // The counts are the fragment shader's atomics: glGetNamedBufferSubData sees them only
-  // behind this barrier (as ssr's).
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-}
-
-gpu::Program impostorProgram(const char* fragment, std::vector<std::string> defines) {
-  defines.push_back("MIRAGE_REFLECTOR_SCREEN 1");
-  return gpu::Program::graphics("render/shaders/fullscreen.vert", fragment, defines);
 }
 
 BillboardStage::BillboardStage(const BillboardStageOptions& options, const Scene& scene)
@@ -171,7 +157,7 @@ void BillboardStage::bind(const gpu::Program& program, const GpuScene& gpu) cons
   }
 }
 
-bool BillboardStage::beginFrame(FrameContext& frame, const gpu::Program& program,
+bool BillboardStage::beginFrame(FrameContext& frame, const ImpostorShader& shader,
                                 const gpu::Program& base_program,
                                 bool last_bounce_reflective) const {
   frame.drawDirect();
@@ -180,8 +166,10 @@ bool BillboardStage::beginFrame(FrameContext& frame, const gpu::Program& program
     frame.drawOwnReflectors(base_program);
     return false;
   }
-  bind(program, frame.gpu);
-  program.set("u_last_bounce_reflective", last_bounce_reflective ? 1 : 0);
+  for (const gpu::Program* program : shader.programs()) {
+    bind(*program, frame.gpu);
+    program->set("u_last_bounce_reflective", last_bounce_reflective ? 1 : 0);
+  }
   counts_.resetAndBind(MIRAGE_BIND_IMPOSTOR_COUNTS);
   return true;
 }

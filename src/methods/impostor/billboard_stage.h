@@ -17,6 +17,7 @@
 #include "methods/impostor/billboard_capture.h"
 #include "methods/impostor/billboard_set.h"
 #include "methods/impostor/impostor_groups.h"
+#include "methods/impostor/impostor_shader.h"
 #include "methods/method.h"
 #include "render/cube_capture.h"
 #include "render/reflector_gbuffer.h"
@@ -40,16 +41,6 @@ GroupCaps impostorGroupCaps(const BillboardStageOptions& options);
 // --last-bounce all: the last bounce tests reflective billboards too (a hit shows its base colour).
 bool lastBounceReflective(const ParamValues& params);
 
-// Draws the frame's own reflectors (FrameContext::own) into `gbuffer` at their base colour, then
-// shades their pixels with `program`, a screen-space pass (impostorProgram): the expensive
-// shader runs once per visible pixel, after one pass over the reflectors' triangles. Ends with
-// the barrier that lets the stage read the trace's counts back (stats()).
-void drawReflectorsOnce(FrameContext& frame, ReflectorGBuffer& gbuffer,
-                        const gpu::Program& program);
-// An impostor method's reflector shader `fragment` (which includes impostor_trace.glsl),
-// compiled as the screen-space pass drawReflectorsOnce runs, with `defines`.
-gpu::Program impostorProgram(const char* fragment, std::vector<std::string> defines);
-
 class BillboardStage {
  public:
   // Groups the scene's billboarded objects (--impostor-groups; needs a current context for the
@@ -63,9 +54,9 @@ class BillboardStage {
   void bind(const gpu::Program& program, const GpuScene& gpu) const;
   // An impostor method's frame up to its reflections: the direct part; then, when there is
   // something to trace (order >= 1 and reflectors), binds the stage and the last-bounce rule
-  // for `program` and returns true; otherwise draws the reflectors with `base_program` (their
-  // base colour) and returns false.
-  bool beginFrame(FrameContext& frame, const gpu::Program& program,
+  // for `shader`'s programs and returns true; otherwise draws the reflectors with
+  // `base_program` (their base colour) and returns false.
+  bool beginFrame(FrameContext& frame, const ImpostorShader& shader,
                   const gpu::Program& base_program, bool last_bounce_reflective) const;
   bool empty() const { return set_.ranges.empty(); }
   // The defines impostor_trace.glsl needs for these options (IMPOSTOR_MORPH: the morph's box).

@@ -111,7 +111,9 @@ class SsrMethod final : public Method {
     program_.set("u_forward", frame.view.forward());
     // Over the reflector pixels of the G-buffer; the target's alpha (eye distance) and reflector
     // ids are kept.
-    gbuffer_.shade(frame.target, frame.passes, frame.view, frame.settings, program_, frame.own);
+    ShadeOptions options;
+    options.own = frame.own;
+    gbuffer_.shade(frame.target, frame.passes, frame.view, frame.settings, program_, options);
     // The counts are atomics of the fragment shader: stats() reads them with
     // glGetNamedBufferSubData, which GL orders after the draw only behind this barrier (without
     // it, and without a glFinish between, llvmpipe returned zeros).

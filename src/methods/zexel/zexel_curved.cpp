@@ -41,8 +41,9 @@ ZexelCurvedReflectors::ZexelCurvedReflectors(const MethodSetup& setup)
                                    setup.params.on("zexel-curved-bounds"))),
       cubes_(size_, GL_RGBA32F),
       recapture_(probeRecapture(setup.params)),
-      program_(
-          gpu::Program::graphics("render/shaders/scene.vert", "methods/zexel/zexel_inverse.frag")),
+      program_(gpu::Program::graphics("render/shaders/fullscreen.vert",
+                                      "methods/zexel/zexel_inverse.frag",
+                                      {"MIRAGE_REFLECTOR_SCREEN 1"})),
       base_program_(baseColourProgram()),
       diffuse_(setup.gpu.scene().diffuseInstances()) {
   const Scene& scene = setup.gpu.scene();
@@ -78,19 +79,29 @@ void ZexelCurvedReflectors::update(FrameContext& frame) {
         cubes_.centre(int(centres_.size()), frame.gpu.instanceBounds(instance).center()));
 }
 
-void ZexelCurvedReflectors::draw(FrameContext& frame) const {
-  if (!inverse_ || frame.settings.order == 0 || centres_.empty()) return;
+std::vector<int> ZexelCurvedReflectors::draw(FrameContext& frame) {
+  std::vector<int> own;
+  if (!inverse_ || frame.settings.order == 0 || centres_.empty()) return own;
+  for (int instance : curved_)
+    if (frame.owns(instance)) own.push_back(instance);
+  if (own.empty()) return own;
+  gbuffer_.begin(frame.target, frame.passes, frame.view, frame.settings);
+  frame.passes.drawReflectorInstances(gbuffer_.reflectorProgram(), own);
   cubes_.bind(MIRAGE_UNIT_METHOD);
   distances_.bind();
   program_.set("u_top_level", std::min(search_.top_level, distances_.topLevel()));
-  program_.use();
-  for (size_t r = 0; r < curved_.size(); ++r) {
-    if (!frame.owns(curved_[r])) continue;
+  ShadeOptions options;
+  options.own = &own;
+  options.each = [&](int instance) {
+    const size_t r = size_t(std::find(curved_.begin(), curved_.end(), instance) - curved_.begin());
     program_.set("u_layer", int(r));
     program_.set("u_centre", centres_[r]);
-    frame.gpu.draw(curved_[r]);
-  }
+  };
+  gbuffer_.shade(frame.target, frame.passes, frame.view, frame.settings, program_, options);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // the counts, read back by the stats
+  frame.target.bind();
+  frame.passes.begin(frame.view, frame.settings);
+  return own;
 }
 
 void ZexelCurvedReflectors::addStats(std::map<std::string, double>& stats,

@@ -17,6 +17,7 @@
 #include "methods/zexel/zexel_cube_map.h"
 #include "methods/zexel/zexel_distance_pyramid.h"
 #include "render/probe_array.h"
+#include "render/reflector_gbuffer.h"
 
 namespace mirage {
 
@@ -32,12 +33,15 @@ class ZexelCurvedReflectors {
   // it shows drifted beyond the tolerances, within the probe budget (a camera move alone changes
   // nothing here).
   void update(FrameContext& frame);
-  // Draws the curved reflectors into the bound target, after ScenePasses::begin for the frame's
-  // view and before the pass that draws the remaining reflectors in their base colour: that pass
-  // then fails the depth test at these pixels (GL_LESS on the same invariant vertex shader).
-  // Draws nothing at order 0 or with `--zexel-curved base`. The searches add their pixels and
-  // reads to the method's counters (MIRAGE_ZEXEL_COUNT_CURVED_*, bound by the caller).
-  void draw(FrameContext& frame) const;
+  // Draws the curved reflectors this frame owns into the frame target (bound again after) and
+  // returns them: once into a G-buffer (render/reflector_gbuffer.h), then the search as a
+  // screen-space pass over their pixels, one draw a reflector. spheres9's spheres hold 83K
+  // triangles over 58K pixels: a search run per triangle ran on quads most of whose lanes were
+  // off the triangle. The pass that draws the remaining reflectors in their base colour skips
+  // these. Draws nothing (and returns none) at order 0 or with `--zexel-curved base`. The
+  // searches add their pixels and reads to the method's counters (MIRAGE_ZEXEL_COUNT_CURVED_*,
+  // bound by the caller).
+  std::vector<int> draw(FrameContext& frame);
   // `zexel_curved_reflectors` (served by inverse warping), `zexel_cube_captures`, and from the
   // method's counters of the last frame, `zexel_curved_reads_per_ray`.
   void addStats(std::map<std::string, double>& stats, const std::vector<double>& counters) const;
@@ -53,6 +57,7 @@ class ZexelCurvedReflectors {
   gpu::Program program_, base_program_;
   std::vector<vec3> centres_;  // where each cube was captured
   std::vector<int> diffuse_;   // every diffuse instance
+  ReflectorGBuffer gbuffer_;
 };
 
 }  // namespace mirage

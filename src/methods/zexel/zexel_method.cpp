@@ -170,7 +170,7 @@ class ZexelMethod final : public Method {
       draw(frame, *m);
       shown.push_back(m->maps.mirror());
     }
-    curved_.draw(frame);  // first: the base pass below then fails the depth test there
+    for (int i : curved_.draw(frame)) shown.push_back(i);
     base_program_.use();
     for (int i : frame.gpu.scene().reflectorInstances())
       if (frame.owns(i) && std::find(shown.begin(), shown.end(), i) == shown.end())
