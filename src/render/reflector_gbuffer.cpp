@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "render/depth_state.h"
 #include "shading/gpu_types.h"
 
 namespace mirage {
@@ -115,8 +116,7 @@ void ReflectorGBuffer::drawTriangles(const FrameTarget& target, ScenePasses& pas
   // as a pass over the triangles writes them.
   target.bind();
   passes.begin(view, settings);
-  glDepthFunc(GL_LEQUAL);
-  glDepthMask(GL_FALSE);
+  DepthState visible(GL_LEQUAL, false);
   const std::vector<int> reflectors = passes.scene().scene().reflectorInstances();
   for (size_t k = 0; k < reflectors.size(); ++k) {
     const ivec4 r = rectangles[k];
@@ -124,8 +124,6 @@ void ReflectorGBuffer::drawTriangles(const FrameTarget& target, ScenePasses& pas
     if (options.each) options.each(reflectors[k]);
     passes.drawReflectorInstances(program, std::span<const int>(&reflectors[k], 1));
   }
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_TRUE);
 }
 
 bool screenPassPays(size_t triangles, const ivec4& rectangle) {

@@ -15,6 +15,7 @@
 #include "methods/probe_params.h"
 #include "methods/recapture_params.h"
 #include "render/base_colour.h"
+#include "render/depth_state.h"
 #include "render/probe_array.h"
 
 namespace mirage {
@@ -145,9 +146,8 @@ class HybridMethod final : public Method {
     splat(frame);
 
     probes_.bind(MIRAGE_UNIT_HYBRID_PROBES);
-    glDepthFunc(GL_LEQUAL);  // the visibility pass left the reflectors' depth
+    DepthState visible(GL_LEQUAL, true);  // the visibility pass left the reflectors' depth
     frame.drawOwnReflectors(resolve_program_);
-    glDepthFunc(GL_LESS);
   }
 
   int orderRendered(int requested) const override { return std::min(requested, 1); }

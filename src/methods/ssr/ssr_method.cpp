@@ -8,6 +8,7 @@
 #include "methods/recapture_params.h"
 #include "methods/ssr/hiz_pyramid.h"
 #include "methods/ssr/ssr_shared.h"
+#include "render/depth_state.h"
 #include "render/frame_target.h"
 #include "render/probe_lookup.h"
 #include "render/reflector_gbuffer.h"
@@ -31,21 +32,6 @@ struct ColorCopy {
   ivec2 size;
   GLuint color_id;
   gpu::Texture color;
-};
-
-// Draws with the depth test EQUAL and no depth writes while it lives: the surfaces already in
-// the depth buffer, again.
-struct DepthEqual {
-  DepthEqual() {
-    glDepthFunc(GL_EQUAL);
-    glDepthMask(GL_FALSE);
-  }
-  ~DepthEqual() {
-    glDepthMask(GL_TRUE);
-    glDepthFunc(GL_LESS);
-  }
-  DepthEqual(const DepthEqual&) = delete;
-  DepthEqual& operator=(const DepthEqual&) = delete;
 };
 
 // The fallback method, made with ssr's own parameters (a superset of its).
@@ -131,7 +117,7 @@ class SsrMethod final : public Method {
     if (frame.direct) {
       frame.passes.drawDiffuseWith(gbuffer_diffuse_);
     } else {
-      DepthEqual equal;
+      DepthState equal(GL_EQUAL, false);  // the surfaces already in the depth buffer, again
       frame.passes.drawDiffuseWith(gbuffer_diffuse_);
     }
     frame.drawOwnReflectors(gbuffer_.reflectorProgram());  // inside `mixed`, the others draw theirs
