@@ -35,6 +35,17 @@ bool debugContextByDefault() {
   return debugSwitch("MIRAGE_GL_DEBUG");
 }
 
+bool isSoftwareRenderer(const std::string& renderer) {
+  for (const char* soft : {"llvmpipe", "softpipe", "swrast", "SwiftShader"})
+    if (renderer.find(soft) != std::string::npos) return true;
+  return false;
+}
+
+bool currentContextIsSoftware() {
+  const GLubyte* s = glGetString(GL_RENDERER);
+  return s && isSoftwareRenderer(reinterpret_cast<const char*>(s));
+}
+
 void Context::queryInfo(const std::string& platform) {
   auto str = [](GLenum name) {
     const GLubyte* s = glGetString(name);
@@ -46,8 +57,7 @@ void Context::queryInfo(const std::string& platform) {
   info_.version = str(GL_VERSION);
   glGetIntegerv(GL_MAJOR_VERSION, &info_.major);
   glGetIntegerv(GL_MINOR_VERSION, &info_.minor);
-  for (const char* soft : {"llvmpipe", "softpipe", "swrast", "SwiftShader"})
-    if (info_.renderer.find(soft) != std::string::npos) info_.software = true;
+  info_.software = isSoftwareRenderer(info_.renderer);
   if (info_.major * 10 + info_.minor < 45)
     throw NoOpenGLError("OpenGL 4.5 core is required, the driver gives " + info_.version + " (" +
                         info_.renderer + ")");

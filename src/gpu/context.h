@@ -28,6 +28,11 @@ class Context {
   GlInfo info_;
 };
 
+// The renderer string names a software rasteriser (llvmpipe, softpipe, swrast, SwiftShader).
+bool isSoftwareRenderer(const std::string& renderer);
+// The same for the current context.
+bool currentContextIsSoftware();
+
 struct ContextOptions {
   bool debug = false;  // request a debug context and print KHR_debug messages
 };

@@ -55,7 +55,8 @@ C3rcFrame someC3rcs(const Scene& scene, const std::vector<mat4>& matrices, const
 
 // The CPU culling's kept leaves, unmerged, as the GPU path writes them.
 std::vector<Pair> cpuPairs(const std::vector<C3rcData>& c3rcs, const std::vector<mat4>& matrices,
-                           const PointStore& store, Culling culling, CullCounters& counters) {
+                           const PointStore& store, Culling culling, bool cull_backfaces,
+                           CullCounters& counters) {
   std::vector<Pair> pairs;
   std::vector<uint32_t> leaves;
   for (size_t i = 0; i < c3rcs.size(); ++i) {
@@ -63,7 +64,9 @@ std::vector<Pair> cpuPairs(const std::vector<C3rcData>& c3rcs, const std::vector
     for (const PointCloud& cloud : store.clouds()) {
       const mat4 to_object = glm::inverse(matrices[size_t(cloud.points.instance)]);
       leaves.clear();
-      cullLeaves(cloud.tree, transformC3rc(c3rcs[i], to_object), culling, leaves, counters);
+      cullLeaves(cloud.tree, transformC3rc(c3rcs[i], to_object), culling,
+                 cull_backfaces ? std::span<const vec4>(cloud.cones) : std::span<const vec4>(),
+                 leaves, counters);
       for (uint32_t leaf : leaves) {
         const KdNode& node = cloud.tree.nodes()[leaf];
         pairs.emplace_back(int(i), int(cloud.offset + node.begin), int(node.end - node.begin));
@@ -90,16 +93,22 @@ TEST_F(HybridGpuCull, KeepsExactlyTheCpuPairsInEveryMode) {
   int levels = 0;
   for (const PointCloud& cloud : store.clouds())
     levels = std::max(levels, cloud.tree.stats().max_depth + 1);
-  // Exact first: none, last, keeps far more leaves and must grow the buffers.
-  for (Culling culling : {Culling::kExact, Culling::kHull, Culling::kNone}) {
-    SCOPED_TRACE(int(culling));
+  // Exact first: none, last, keeps far more leaves and must grow the buffers. The normal cones
+  // drop nodes in every mode but none.
+  for (auto [culling, backfaces] : {std::pair{Culling::kExact, false},
+                                    {Culling::kInner, true},
+                                    {Culling::kInner, false},
+                                    {Culling::kHull, true},
+                                    {Culling::kNone, false}}) {
+    SCOPED_TRACE(int(culling) * 2 + int(backfaces));
     // Without culling every pair keeps every leaf: a tenth of the C3RCs keeps the items within
     // the largest storage block.
     std::vector<C3rcData> c3rcs = frame.c3rcs;
     if (culling == Culling::kNone) c3rcs.resize(c3rcs.size() / 10);
     CullCounters cpu_counters;
-    const std::vector<Pair> cpu = cpuPairs(c3rcs, matrices, store, culling, cpu_counters);
-    const KdGpuCullResult result = gpu.run(c3rcs, matrices, culling);
+    const std::vector<Pair> cpu =
+        cpuPairs(c3rcs, matrices, store, culling, backfaces, cpu_counters);
+    const KdGpuCullResult result = gpu.run(c3rcs, matrices, culling, backfaces);
     std::vector<Pair> got;
     for (const ivec4& item : gpu.downloadItems(result.items)) {
       EXPECT_EQ(item.w, MIRAGE_KD_ITEM_W) << "floatBitsToInt(1.0f): a stride of one";
@@ -107,10 +116,10 @@ TEST_F(HybridGpuCull, KeepsExactlyTheCpuPairsInEveryMode) {
     }
     std::sort(got.begin(), got.end());
     std::printf(
-        "culling %d: %zu C3RCs, %zu pairs, %lld nodes tested, %lld kept for a fold, %d "
-        "dispatches\n",
-        int(culling), c3rcs.size(), cpu.size(), cpu_counters.nodes_tested, cpu_counters.fold_keeps,
-        result.dispatches);
+        "culling %d, back faces %d: %zu C3RCs, %zu pairs, %lld nodes tested, %lld kept for a "
+        "fold, %lld dropped facing away, %d dispatches\n",
+        int(culling), int(backfaces), c3rcs.size(), cpu.size(), cpu_counters.nodes_tested,
+        cpu_counters.fold_keeps, cpu_counters.cone_rejects, result.dispatches);
     ASSERT_GT(cpu.size(), 0u);
     EXPECT_EQ(got.size(), cpu.size());
     EXPECT_TRUE(got == cpu) << "the GPU keeps the CPU's (C3RC, leaf) pairs";
@@ -118,7 +127,11 @@ TEST_F(HybridGpuCull, KeepsExactlyTheCpuPairsInEveryMode) {
     EXPECT_EQ(result.cull.hull_rejects, cpu_counters.hull_rejects);
     EXPECT_EQ(result.cull.exact_rejects, cpu_counters.exact_rejects);
     EXPECT_EQ(result.cull.fold_keeps, cpu_counters.fold_keeps);
+    EXPECT_EQ(result.cull.cone_rejects, cpu_counters.cone_rejects);
     EXPECT_EQ(result.cull.leaves_kept, cpu_counters.leaves_kept);
+    if (backfaces) {
+      EXPECT_GT(cpu_counters.cone_rejects, 0) << "the moved teapot's far side";
+    }
     // One dispatch per level, and one more whenever a buffer had to grow: none outgrows the
     // buffers that exact and hull left.
     EXPECT_GE(result.dispatches, levels);
@@ -141,9 +154,9 @@ TEST_F(HybridGpuCull, KeepsTheCpuPairsWhereTheViewVolumeFolds) {
   ASSERT_GT(frame.multiple_c3rcs, 50);
   CullCounters cpu_counters;
   const std::vector<Pair> cpu =
-      cpuPairs(frame.c3rcs, matrices, store, Culling::kExact, cpu_counters);
+      cpuPairs(frame.c3rcs, matrices, store, Culling::kExact, true, cpu_counters);
   KdGpuCull gpu(store);
-  const KdGpuCullResult result = gpu.run(frame.c3rcs, matrices, Culling::kExact);
+  const KdGpuCullResult result = gpu.run(frame.c3rcs, matrices, Culling::kExact, true);
   std::vector<Pair> got;
   for (const ivec4& item : gpu.downloadItems(result.items))
     got.emplace_back(item.x, item.y, item.z);
@@ -162,7 +175,7 @@ TEST_F(HybridGpuCull, FramesEqualTheCpuPathBitForBit) {
   FrameRenderer renderer(scene, size);
   FrameSettings settings;
   settings.order = 1;
-  for (const char* culling : {"exact", "none"}) {
+  for (const char* culling : {"inner", "exact", "none"}) {
     SCOPED_TRACE(culling);
     Image images[2];
     std::map<std::string, double> stats[2];
@@ -184,8 +197,9 @@ TEST_F(HybridGpuCull, FramesEqualTheCpuPathBitForBit) {
     EXPECT_EQ(stats[0].at("cull_on_gpu"), 0.0);
     EXPECT_EQ(stats[1].at("cull_on_gpu"), 1.0);
     EXPECT_GT(stats[0].at("projections"), 1000.0);
-    for (const char* key : {"projections", "points_projected", "cull_nodes_tested",
-                            "cull_leaves_kept", "cull_exact_rejects", "splats_written"})
+    for (const char* key :
+         {"projections", "points_projected", "cull_nodes_tested", "cull_leaves_kept",
+          "cull_exact_rejects", "cull_cone_rejects", "splats_written"})
       EXPECT_EQ(stats[0].at(key), stats[1].at(key)) << key;
     EXPECT_GE(stats[1].at("splat_items"), stats[0].at("splat_items")) << "no merging on the GPU";
   }

@@ -4,6 +4,7 @@
 // on degenerate reflector triangles.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <random>
 
@@ -245,6 +246,42 @@ TEST(HybridC3rcFrame, DegenerateReflectorTrianglesAreSkippedAndCounted) {
   EXPECT_EQ(frame.degenerate_triangles, 2);
   EXPECT_TRUE(frame.items.empty()) << "no points: nothing to splat";
   EXPECT_EQ(store.pointCount(), 0u);
+}
+
+// The splatting pass's runs cover every item once, in order, and stay within their caps: at most
+// `max_points` points taken (the strides applied) unless one item alone holds more, and at most
+// `max_items` items.
+TEST(HybridC3rcFrame, ItemRunsCoverEveryItemWithinTheirCaps) {
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<int> count(1, 4096);
+  std::uniform_real_distribution<float> stride(1.0f, 40.0f);
+  std::vector<ivec4> items;
+  for (int i = 0; i < 3000; ++i)
+    items.emplace_back(i / 7, 0, count(rng), std::bit_cast<int>(i % 5 == 0 ? 1.0f : stride(rng)));
+  auto taken = [](const ivec4& it) {
+    const float s = std::bit_cast<float>(it.w);
+    return s > 1.0f ? (long long)std::ceil(float(it.z) / s) : (long long)it.z;
+  };
+  const std::vector<uint32_t> runs = itemRuns(items, 4096, 64);
+  ASSERT_GE(runs.size(), 2u);
+  EXPECT_EQ(runs.front(), 0u);
+  EXPECT_EQ(runs.back(), items.size());
+  for (size_t r = 0; r + 1 < runs.size(); ++r) {
+    ASSERT_LT(runs[r], runs[r + 1]) << "run " << r << " is empty";
+    EXPECT_LE(runs[r + 1] - runs[r], 64u);
+    long long points = 0;
+    for (uint32_t i = runs[r]; i < runs[r + 1]; ++i) points += taken(items[i]);
+    if (runs[r + 1] - runs[r] > 1) {
+      EXPECT_LE(points, 4096) << "run " << r;
+    }
+    // Greedy: the next item did not fit.
+    if (r + 2 < runs.size() && runs[r + 1] - runs[r] < 64) {
+      EXPECT_GT(points + taken(items[runs[r + 1]]), 4096) << "run " << r;
+    }
+  }
+  EXPECT_LT(runs.size(), items.size() / 4) << "strided items share runs";
+  EXPECT_EQ(itemRuns({}, 4096, 64), std::vector<uint32_t>{0u});
+  EXPECT_EQ(itemRuns(items, 4096, 1).size(), items.size() + 1) << "one item a run";
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "methods/hybrid/c3rc_cull.h"
 
+#include "core/check.h"
 #include "methods/hybrid/c3rc_cull_shared.h"
 
 namespace mirage {
@@ -32,9 +33,10 @@ int classifyBox(const C3rcData& c, const Bounds3& box) {
   return shading::c3rc_classify_box(c, box.lo, box.hi);
 }
 
-void cullLeaves(const KdTree& tree, const C3rcData& c, Culling culling,
+void cullLeaves(const KdTree& tree, const C3rcData& c, Culling culling, std::span<const vec4> cones,
                 std::vector<uint32_t>& leaves, CullCounters& counters) {
   if (tree.empty()) return;
+  MIRAGE_CHECK(cones.empty() || cones.size() == tree.nodes().size());
   const std::vector<KdNode>& nodes = tree.nodes();
   uint32_t stack[64 * 8];
   int top = 0;
@@ -48,7 +50,13 @@ void cullLeaves(const KdTree& tree, const C3rcData& c, Culling culling,
         ++counters.hull_rejects;
         continue;
       }
-      if (culling == Culling::kExact) {
+      if (!cones.empty() &&
+          shading::c3rc_cone_faces_away(cones[index], node.bounds.lo, node.bounds.hi, vec3(c.v0),
+                                        vec3(c.v1), vec3(c.v2))) {
+        ++counters.cone_rejects;
+        continue;
+      }
+      if (culling == Culling::kExact || (culling == Culling::kInner && !node.leaf())) {
         const int kind = classifyBox(c, node.bounds);
         if (kind == MIRAGE_C3RC_BOX_OUT) {
           ++counters.exact_rejects;

@@ -41,6 +41,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "core/bounds.h"
@@ -65,19 +66,22 @@ bool segmentCrossesWall(const vec3& p, const vec3& q, const vec3& vi, const vec3
 enum class Culling {
   kNone,   // every leaf (the naive baseline: every point through every C3RC)
   kHull,   // the hull planes only
-  kExact,  // hull planes, then the exact test
+  kInner,  // hull planes, then the exact test at inner nodes only (leaves: the hull planes)
+  kExact,  // hull planes, then the exact test at every node
 };
 
 struct CullCounters {
   long long nodes_tested = 0;
   long long hull_rejects = 0;
   long long exact_rejects = 0;
-  long long fold_keeps = 0;  // nodes the exact test keeps for a fold alone
+  long long cone_rejects = 0;  // nodes whose points all face away (normal_cone.h)
+  long long fold_keeps = 0;    // nodes the exact test keeps for a fold alone
   long long leaves_kept = 0;
   CullCounters& operator+=(const CullCounters& o) {
     nodes_tested += o.nodes_tested;
     hull_rejects += o.hull_rejects;
     exact_rejects += o.exact_rejects;
+    cone_rejects += o.cone_rejects;
     fold_keeps += o.fold_keeps;
     leaves_kept += o.leaves_kept;
     return *this;
@@ -85,8 +89,10 @@ struct CullCounters {
 };
 
 // Appends the index of every leaf of `tree` that may hold a point the C3RC `c` (in the tree's
-// space) projects.
-void cullLeaves(const KdTree& tree, const C3rcData& c, Culling culling,
+// space) projects. `cones` (when not empty): the nodes' normal cones (normal_cone.h), which drop
+// the nodes whose points all face away from the C3RC's triangle — for a splatting that skips
+// such points (--hybrid-backfaces skip); culling kNone tests nothing.
+void cullLeaves(const KdTree& tree, const C3rcData& c, Culling culling, std::span<const vec4> cones,
                 std::vector<uint32_t>& leaves, CullCounters& counters);
 
 }  // namespace mirage

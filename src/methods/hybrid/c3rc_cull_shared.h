@@ -39,6 +39,29 @@ SHARED_FN bool c3rc_hull_rejects(C3rcData c, vec3 lo, vec3 hi) {
   return false;
 }
 
+// Every point within the box whose normal lies in `cone` (xyz the unit axis, w the cosine of the
+// half-angle θ; w < −1: no cone) faces away from v, i.e. n·(v − q) < 0. With c the box's centre,
+// r its half-diagonal and u = v − c, n·(v − q) ≤ n·u + r; over the cone the largest n·u is |u|
+// when u lies within it, else |u| cos(φ − θ) = (a·u) cos θ + |u × a| sin θ (φ the angle of u to
+// the axis a). The box is widened by the culling's margin and r by 1e-4 (|u| + r) for rounding.
+SHARED_FN bool c3rc_cone_faces_away_from(vec4 cone, vec3 lo, vec3 hi, vec3 v) {
+  float margin = c3rc_box_margin(lo, hi);
+  vec3 u = v - 0.5f * (lo + hi);
+  float r = 0.5f * length(hi - lo) + margin;
+  float along = dot(vec3(cone), u), distance = length(u);
+  if (!(along < cone.w * distance)) return false;  // u within the cone (or no cone)
+  float across = sqrt(max(distance * distance - along * along, 0.0f));
+  float sine = sqrt(max(1.0f - cone.w * cone.w, 0.0f));
+  return along * cone.w + across * sine < -(r + 1e-4f * (distance + r));
+}
+
+// The same for all three of v0 v1 v2: every point of the box with a normal in the cone is one
+// the splatting skips (hybrid_faces_away), so the culling drops the box.
+SHARED_FN bool c3rc_cone_faces_away(vec4 cone, vec3 lo, vec3 hi, vec3 v0, vec3 v1, vec3 v2) {
+  return c3rc_cone_faces_away_from(cone, lo, hi, v0) &&
+         c3rc_cone_faces_away_from(cone, lo, hi, v1) && c3rc_cone_faces_away_from(cone, lo, hi, v2);
+}
+
 // The triangle's points p0 p1 p2 (relative to the box centre) all lie beyond the box's extent
 // `half_size` along `axis`.
 SHARED_FN bool c3rc_axis_separates(vec3 axis, vec3 half_size, vec3 p0, vec3 p1, vec3 p2) {

@@ -14,10 +14,6 @@ namespace mirage {
 
 namespace {
 
-// The longest run of points one work item covers (a longer one would leave the GPU's other
-// workgroups idle).
-constexpr uint32_t kMaxItemPoints = 4096;
-
 struct TriangleRef {
   int reflector;  // index into `reflectors`
   uint32_t triangle;
@@ -77,9 +73,11 @@ bool worldTriangle(const Mesh& mesh, uint32_t triangle, const mat4& model, vec3 
 // neighbouring leaves (contiguous ranges of the cloud) merged into one longer item, which the
 // splatting shader runs with fewer idle invocations.
 void addCloudItems(int c3rc, const PointCloud& cloud, const C3rcData& in_object, Culling culling,
-                   Local& local) {
+                   bool cull_backfaces, Local& local) {
   local.leaves.clear();
-  cullLeaves(cloud.tree, in_object, culling, local.leaves, local.cull);
+  cullLeaves(cloud.tree, in_object, culling,
+             cull_backfaces ? std::span<const vec4>(cloud.cones) : std::span<const vec4>(),
+             local.leaves, local.cull);
   std::sort(local.leaves.begin(), local.leaves.end(), [&](uint32_t a, uint32_t b) {
     return cloud.tree.nodes()[a].begin < cloud.tree.nodes()[b].begin;
   });
@@ -111,7 +109,32 @@ void setLodStride(Local& local, size_t first_item, float density, uint32_t pixel
   local.kept_points += kept;
 }
 
+// The points an item takes: every stride-th of its count (hybrid_splat.comp's `taken`).
+long long takenPoints(const ivec4& item) {
+  const float stride = std::bit_cast<float>(item.w);
+  return stride > 1.0f ? (long long)(std::ceil(float(item.z) / stride)) : item.z;
+}
+
 }  // namespace
+
+std::vector<uint32_t> itemRuns(const std::vector<ivec4>& items, long long max_points,
+                               size_t max_items) {
+  std::vector<uint32_t> runs;
+  long long points = 0;
+  size_t count = 0;
+  for (size_t i = 0; i < items.size(); ++i) {
+    const long long taken = takenPoints(items[i]);
+    if (runs.empty() || points + taken > max_points || count >= max_items) {
+      runs.push_back(uint32_t(i));
+      points = 0;
+      count = 0;
+    }
+    points += taken;
+    ++count;
+  }
+  runs.push_back(uint32_t(items.size()));
+  return runs;
+}
 
 C3rcFrame buildC3rcFrame(const Scene& scene, const std::vector<int>& reflectors,
                          const std::vector<std::vector<uint32_t>>& pixels,
@@ -149,7 +172,7 @@ C3rcFrame buildC3rcFrame(const Scene& scene, const std::vector<int>& reflectors,
     const size_t first_item = local.items.size();
     for (size_t k = 0; options.cull_on_cpu && k < points.clouds().size(); ++k)
       addCloudItems(int(i), points.clouds()[k], transformC3rc(c, to_object[k]), options.culling,
-                    local);
+                    options.cull_backfaces, local);
     setLodStride(local, first_item, options.lod_density,
                  pixels[size_t(ref.reflector)][ref.triangle]);
   });

@@ -13,9 +13,16 @@
 
 namespace mirage {
 
+// The longest run of points one work item covers (a longer one would leave the GPU's other
+// workgroups idle), and the most points a run of items takes (itemRuns).
+inline constexpr uint32_t kMaxItemPoints = 4096;
+
 struct C3rcFrameOptions {
   int min_pixels = 1;  // reflector triangles with fewer visible pixels show the environment
-  Culling culling = Culling::kExact;
+  Culling culling = Culling::kInner;
+  // Drop the kd-nodes whose points all face away from the triangle (normal_cone.h): set where the
+  // splatting skips such points (--hybrid-backfaces skip).
+  bool cull_backfaces = false;
   float reach = 1.0f;      // the largest reflector-to-point distance worth searching
   bool eye_scaled = true;  // construction rays scaled by the eye distance (else unit: the paper)
   // Level of detail: at most this many points per visible pixel of a C3RC's triangle are
@@ -39,6 +46,13 @@ struct C3rcFrame {
   CullCounters cull;
   double ms = 0.0;  // wall time of the whole phase
 };
+
+// The runs of consecutive work items the splatting pass gives one workgroup each: the first item
+// of every run, then items.size(). A run takes items while their points (the strides applied)
+// total at most `max_points` (an item with more is a run of its own), at most `max_items` of
+// them. One C3RC's items are consecutive, so a run loads its C3RC once.
+std::vector<uint32_t> itemRuns(const std::vector<ivec4>& items, long long max_points,
+                               size_t max_items);
 
 // `pixels[r][t]`: visible pixels of triangle t of reflector instance `reflectors[r]`;
 // `matrices`: every instance's current transform; `meshes` (when given): every instance's

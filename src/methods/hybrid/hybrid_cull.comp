@@ -29,6 +29,7 @@ uniform int u_entry_count;     // queue entries (at the first level: pairs)
 uniform int u_first_level;     // 1: entry i is pair i at its cloud's root
 uniform int u_cloud_count;
 uniform int u_culling;         // MIRAGE_KD_CULL_*
+uniform int u_cull_backfaces;  // 1: drop the nodes whose normal cone faces away (normal_cone.h)
 uniform int u_item_capacity;   // items beyond it are counted, not written
 uniform int u_queue_capacity;  // the same for the next level's queue
 
@@ -54,7 +55,14 @@ void main() {
       atomicAdd(state[MIRAGE_KD_STATE_HULL_REJECTS], 1u);
       return;
     }
-    if (u_culling == MIRAGE_KD_CULL_EXACT) {
+    if (u_cull_backfaces != 0 &&
+        c3rc_cone_faces_away(node.cone, node.lo.xyz, node.hi.xyz, vec3(c.v0), vec3(c.v1),
+                             vec3(c.v2))) {
+      atomicAdd(state[MIRAGE_KD_STATE_CONE_REJECTS], 1u);
+      return;
+    }
+    if (u_culling == MIRAGE_KD_CULL_EXACT ||
+        (u_culling == MIRAGE_KD_CULL_INNER && node.range.w != 0u)) {
       int kind = c3rc_classify_box(c, node.lo.xyz, node.hi.xyz);
       if (kind == MIRAGE_C3RC_BOX_OUT) {
         atomicAdd(state[MIRAGE_KD_STATE_EXACT_REJECTS], 1u);

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdlib>
+#include <numeric>
 
 #include "core/error.h"
 #include "core/timer.h"
 #include "gpu/buffer.h"
+#include "gpu/context.h"
 #include "methods/hybrid/c3rc_frame.h"
 #include "methods/hybrid/hybrid_shared.h"
 #include "methods/hybrid/kd_gpu_cull.h"
@@ -31,6 +33,7 @@ constexpr Choice<bool> kEyeScaledRays[] = {{"eye", true}, {"unit", false}};
 Culling parseCulling(const std::string& text) {
   if (text == "none") return Culling::kNone;
   if (text == "hull") return Culling::kHull;
+  if (text == "inner") return Culling::kInner;
   return Culling::kExact;
 }
 
@@ -52,6 +55,13 @@ KdTreeOptions treeOptions(const ParamValues& params) {
 // kept every scene measured within 0.2 dB reflector PSNR of every point (matched 2x2 sampling:
 // docs/data/hybrid-lod/) while it cut teapot-dragon's projections 13x.
 constexpr double kAutoLodDensity = 16.0;
+// The runs of work items one workgroup of the splatting pass projects (itemRuns). A software
+// rasteriser runs each workgroup as a task of one SIMD batch with its own set-up, and a run of
+// one C3RC's items loads the C3RC once: runs of up to 64 items took teapot-dragon's splatting
+// from 39 to 35 ms on llvmpipe. At most kMaxItemPoints points a run, as a merged item holds:
+// llvmpipe ends a shader after 65,535 loop iterations. A GPU needs many workgroups to fill its
+// cores: one item a run there.
+constexpr size_t kRunItemsSoftware = 64;
 constexpr double kMostLodDensity = 1.0e6;
 
 // --hybrid-lod: auto (kAutoLodDensity with the CPU culling; every point with the GPU traversal,
@@ -104,7 +114,8 @@ class HybridMethod final : public Method {
             gpu::Program::graphics("render/shaders/scene.vert", "methods/hybrid/hybrid.frag")),
         id_program_(
             gpu::Program::graphics("render/shaders/scene.vert", "methods/hybrid/triangle_id.frag")),
-        base_program_(baseColourProgram()) {
+        base_program_(baseColourProgram()),
+        run_items_(gpu::currentContextIsSoftware() ? kRunItemsSoftware : 1) {
     const Scene& scene = setup.gpu.scene();
     reflectors_ = scene.reflectorInstances();
     for (int i = 0; i < int(scene.instances.size()); ++i)
@@ -135,6 +146,7 @@ class HybridMethod final : public Method {
     options.min_pixels = min_pixels_;
     options.lod_density = lod_density_;
     options.culling = culling_;
+    options.cull_backfaces = !keep_backfaces_;
     options.eye_scaled = eye_scaled_;
     options.reach = reach(frame);
     options.cull_on_cpu = !gpu_cull_;
@@ -142,7 +154,9 @@ class HybridMethod final : public Method {
     for (size_t i = 0; i < meshes.size(); ++i) meshes[i] = &frame.gpu.mesh(int(i));
     last_ = buildC3rcFrame(frame.gpu.scene(), reflectors_, pixels, frame.gpu.instanceMatrices(),
                            frame.view.eye(), store_, options, &meshes);
-    if (gpu_cull_) gpu_last_ = gpu_cull_->run(last_.c3rcs, frame.gpu.instanceMatrices(), culling_);
+    if (gpu_cull_)
+      gpu_last_ =
+          gpu_cull_->run(last_.c3rcs, frame.gpu.instanceMatrices(), culling_, !keep_backfaces_);
     splat(frame);
 
     probes_.bind(MIRAGE_UNIT_HYBRID_PROBES);
@@ -172,6 +186,7 @@ class HybridMethod final : public Method {
     s["cull_nodes_tested"] = double(cull.nodes_tested);
     s["cull_hull_rejects"] = double(cull.hull_rejects);
     s["cull_exact_rejects"] = double(cull.exact_rejects);
+    s["cull_cone_rejects"] = double(cull.cone_rejects);
     s["cull_fold_keeps"] = double(cull.fold_keeps);
     s["cull_leaves_kept"] = double(cull.leaves_kept);
     s["splat_items"] = double(itemCount());
@@ -294,7 +309,11 @@ class HybridMethod final : public Method {
     counter_buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_COUNTERS);
     frame.target.depth().bind(MIRAGE_UNIT_HYBRID_DEPTH);
     const mat4& proj = frame.view.projectionMatrix();
-    splat_program_.set("u_item_count", int(itemCount()));
+    const std::vector<uint32_t> runs = splatRuns();
+    run_buffer_.upload(std::span<const uint32_t>(runs));
+    run_buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_RUNS);
+    const size_t run_count = runs.size() - 1;
+    splat_program_.set("u_run_count", int(run_count));
     splat_program_.set("u_first_only", first_only_ ? 1 : 0);
     splat_program_.set("u_splat_size", splat_size_);
     splat_program_.set("u_pixel_scale", pixel_scale_);
@@ -309,7 +328,7 @@ class HybridMethod final : public Method {
       splat_program_.set("u_candidate_capacity", int(visibility_.prepare()));
       SplatVisibility::clearWords(counter_buffer_, 0u);
       splat_program_.use();
-      glDispatchCompute(GLuint(std::min<size_t>(itemCount(), 65535)), 1, 1);
+      glDispatchCompute(GLuint(std::min<size_t>(run_count, 65535)), 1, 1);
       glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
       counter_buffer_.download(counters_, sizeof(counters_));
       candidates = counters_[MIRAGE_HYBRID_COUNTER_CANDIDATES];
@@ -320,6 +339,15 @@ class HybridMethod final : public Method {
       splat_ms_ = watch.ms();
     }
     checkEveryPairProjected();
+  }
+
+  // The splatting pass's runs of items (itemRuns); the GPU culling's items, whose strides are all
+  // one and whose count only is known here, one a run.
+  std::vector<uint32_t> splatRuns() const {
+    if (!gpu_cull_) return itemRuns(last_.items, kMaxItemPoints, run_items_);
+    std::vector<uint32_t> runs(itemCount() + 1);
+    std::iota(runs.begin(), runs.end(), 0u);
+    return runs;
   }
 
   // The splatting shader counts the (point, C3RC) pairs it projected; fewer than the items hold
@@ -344,12 +372,13 @@ class HybridMethod final : public Method {
   ProbeArray probes_;  // the background, one cube per reflector
   RecapturePolicy recapture_;
   gpu::Program splat_program_, resolve_program_, id_program_, base_program_;
+  size_t run_items_;  // the most work items a run of the splatting pass takes
   SplatVisibility visibility_;
   std::vector<int> reflectors_, background_;
   gpu::Texture ids_;
   std::unique_ptr<gpu::Framebuffer> ids_fbo_;
   ivec2 ids_size_{0, 0};
-  gpu::Buffer c3rc_buffer_, item_buffer_, counter_buffer_;
+  gpu::Buffer c3rc_buffer_, item_buffer_, run_buffer_, counter_buffer_;
   uint32_t counters_[MIRAGE_HYBRID_COUNTERS] = {};
   C3rcFrame last_;
   std::unique_ptr<KdGpuCull> gpu_cull_;  // --hybrid-cull-on gpu
@@ -383,9 +412,10 @@ MethodEntry hybridMethodEntry() {
       ParamSpec::real("kd-min-size", 0.0, 1.0, 0.0,
                       "kd-tree: a node smaller than this fraction of its object's diagonal is a "
                       "leaf"),
-      ParamSpec::choice("hybrid-culling", {"exact", "hull", "none"}, "exact",
-                        "view-volume culling of kd-tree boxes: hull planes then the exact test, "
-                        "the hull planes only, or none (every point through every C3RC)"),
+      ParamSpec::choice("hybrid-culling", {"inner", "exact", "hull", "none"}, "inner",
+                        "view-volume culling of kd-tree boxes: hull planes, then the exact test "
+                        "at inner nodes (inner) or at every node (exact); the hull planes only; "
+                        "or none (every point through every C3RC)"),
       ParamSpec::choice<bool>(
           "hybrid-cull-on", kCullOnGpu, false,
           "where the kd-trees are culled: on the CPU (TBB, adjacent leaves merged "

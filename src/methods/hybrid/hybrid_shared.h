@@ -23,12 +23,14 @@
 #define MIRAGE_BIND_HYBRID_WINNERS 14           // uint per pixel: the winning point's index
 #define MIRAGE_BIND_HYBRID_CANDIDATES 15        // uint[3 n]: (pixel, depth key, point index)
 #define MIRAGE_BIND_HYBRID_POINT_ATTRIBUTES 16  // PointAttributes[], the same order
+// uint[runs + 1]: the first work item of each run a workgroup projects, then the item count
+#define MIRAGE_BIND_HYBRID_RUNS 17
 #define MIRAGE_HYBRID_COUNTERS 6
 #define MIRAGE_HYBRID_COUNTER_CANDIDATES 5
 #define MIRAGE_UNIT_HYBRID_DEPTH 4   // the frame's depth with the reflectors drawn
 #define MIRAGE_UNIT_HYBRID_PROBES 5  // samplerCubeArray: the background per reflector
 
-#define MIRAGE_HYBRID_GROUP 8            // invocations per work item (see hybrid_splat.comp)
+#define MIRAGE_HYBRID_GROUP 8            // invocations per run of items (see hybrid_splat.comp)
 #define MIRAGE_HYBRID_MAX_SPLAT 8        // the largest automatic splat side, in pixels
 #define MIRAGE_HYBRID_EMPTY 0xFFFFFFFFu  // a pixel no splat reached (either word)
 #define MIRAGE_HYBRID_WINNER_GROUP 64    // invocations per workgroup of hybrid_winner.comp

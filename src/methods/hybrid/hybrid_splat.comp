@@ -15,6 +15,7 @@ layout(local_size_x = MIRAGE_HYBRID_GROUP) in;
 
 layout(std430, binding = MIRAGE_BIND_HYBRID_C3RCS) readonly buffer C3rcBlock { C3rcData c3rcs[]; };
 layout(std430, binding = MIRAGE_BIND_HYBRID_ITEMS) readonly buffer ItemBlock { ivec4 items[]; };
+layout(std430, binding = MIRAGE_BIND_HYBRID_RUNS) readonly buffer RunBlock { uint runs[]; };
 layout(std430, binding = MIRAGE_BIND_HYBRID_POINTS) readonly buffer PointBlock {
   vec4 positions[];
 };
@@ -28,7 +29,7 @@ layout(std430, binding = MIRAGE_BIND_HYBRID_CANDIDATES) writeonly buffer Candida
 };
 layout(binding = MIRAGE_UNIT_HYBRID_DEPTH) uniform sampler2D u_depth;
 
-uniform int u_item_count;
+uniform int u_run_count;
 uniform int u_first_only;    // 1: the first projection only
 uniform int u_splat_size;    // s: an s×s square; 0: from the magnification
 uniform int u_pixel_scale;   // frame pixels per output pixel along a side (--ssaa)
@@ -89,48 +90,66 @@ uint splat(C3rcData c, vec4 proj, vec3 q, float spacing, uint index) {
   return written;
 }
 
+// What an invocation counted, added to the counters once at its end.
+struct Counts {
+  uint projected, projections, written, seen, facing_away;
+};
+
+// This invocation's share of one work item's points (every MIRAGE_HYBRID_GROUP-th of them).
+void project_item(ivec4 it, C3rcData c, inout Counts counts) {
+  // The level of detail: every stride-th point (leaves are in Morton order: a stratified
+  // subsample), each standing for `stride` points, so its spacing grows by sqrt(stride).
+  float stride = max(intBitsToFloat(it.w), 1.0f);
+  float grown = sqrt(stride);
+  int taken = stride > 1.0f ? int(ceil(float(it.z) / stride)) : it.z;
+  // An item lies in one point cloud: one instance, its matrices and closedness loaded once.
+  int instance = int(positions[it.y].w);
+  mat4 model = instances[instance].model;
+  mat3 linear = mat3(model);
+  mat3 normal_matrix = mat3(instances[instance].normal_matrix);
+  bool cull_back = u_keep_backfaces == 0 && attributes[it.y].albedo.w > 0.5f;
+  for (int i = int(gl_LocalInvocationID.x); i < taken; i += MIRAGE_HYBRID_GROUP) {
+    uint index = uint(it.y + min(int(float(i) * stride), it.z - 1));
+    vec4 position = positions[index], object_normal = attributes[index].normal;
+    vec3 q = (model * vec4(position.xyz, 1.0f)).xyz;
+    vec4 p0, p1, p2;
+    int n = 0;
+    bool hidden = cull_back && hybrid_faces_away(normal_matrix * object_normal.xyz, q,
+                                                 vec3(c.v0), vec3(c.v1), vec3(c.v2));
+    if (!hidden) n = c3rc_project(c, q, 1.0e-4f, u_first_only != 0, p0, p1, p2);
+    counts.facing_away += hidden ? 1u : 0u;
+    ++counts.projected;
+    // Only for a point that projects: its spacing in world space, grown with the stride.
+    float spacing = 0.0f;
+    if (n > 0 && u_splat_size == 0)
+      spacing = hybrid_world_spacing(linear, object_normal.xyz, object_normal.w) * grown;
+    for (int k = 0; k < n; ++k) {
+      counts.written += splat(c, k == 0 ? p0 : (k == 1 ? p1 : p2), q, spacing, index);
+    }
+    counts.projections += uint(n);
+    counts.seen += n > 0 ? 1u : 0u;
+  }
+}
+
 void main() {
-  uint projected = 0u, projections = 0u, written = 0u, seen = 0u, facing_away = 0u;
-  for (uint item = gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x;
-       item < uint(u_item_count); item += gl_NumWorkGroups.x * gl_NumWorkGroups.y) {
-    ivec4 it = items[item];
-    C3rcData c = c3rcs[it.x];
-    // The level of detail: every stride-th point (leaves are in Morton order: a stratified
-    // subsample), each standing for `stride` points, so its spacing grows by sqrt(stride).
-    float stride = max(intBitsToFloat(it.w), 1.0f);
-    float grown = sqrt(stride);
-    int taken = stride > 1.0f ? int(ceil(float(it.z) / stride)) : it.z;
-    // An item lies in one point cloud: one instance, its matrices and closedness loaded once.
-    int instance = int(positions[it.y].w);
-    mat4 model = instances[instance].model;
-    mat3 linear = mat3(model);
-    mat3 normal_matrix = mat3(instances[instance].normal_matrix);
-    bool cull_back = u_keep_backfaces == 0 && attributes[it.y].albedo.w > 0.5f;
-    for (int i = int(gl_LocalInvocationID.x); i < taken; i += MIRAGE_HYBRID_GROUP) {
-      uint index = uint(it.y + min(int(float(i) * stride), it.z - 1));
-      vec4 position = positions[index], object_normal = attributes[index].normal;
-      vec3 q = (model * vec4(position.xyz, 1.0f)).xyz;
-      vec4 p0, p1, p2;
-      int n = 0;
-      bool hidden = cull_back && hybrid_faces_away(normal_matrix * object_normal.xyz, q,
-                                                   vec3(c.v0), vec3(c.v1), vec3(c.v2));
-      if (!hidden) n = c3rc_project(c, q, 1.0e-4f, u_first_only != 0, p0, p1, p2);
-      facing_away += hidden ? 1u : 0u;
-      ++projected;
-      // Only for a point that projects: its spacing in world space, grown with the stride.
-      float spacing = 0.0f;
-      if (n > 0 && u_splat_size == 0)
-        spacing = hybrid_world_spacing(linear, object_normal.xyz, object_normal.w) * grown;
-      for (int k = 0; k < n; ++k) {
-        written += splat(c, k == 0 ? p0 : (k == 1 ? p1 : p2), q, spacing, index);
+  Counts counts = Counts(0u, 0u, 0u, 0u, 0u);
+  // A run of consecutive items per workgroup (c3rc_frame.h, itemRuns): one C3RC's items are
+  // consecutive, so its 320 bytes are loaded once per run, not once per item.
+  for (uint run = gl_WorkGroupID.x; run < uint(u_run_count); run += gl_NumWorkGroups.x) {
+    int loaded = -1;
+    C3rcData c;
+    for (uint item = runs[run]; item < runs[run + 1u]; ++item) {
+      ivec4 it = items[item];
+      if (it.x != loaded) {
+        c = c3rcs[it.x];
+        loaded = it.x;
       }
-      projections += uint(n);
-      seen += n > 0 ? 1u : 0u;
+      project_item(it, c, counts);
     }
   }
-  atomicAdd(counters[0], projected);
-  atomicAdd(counters[1], projections);
-  atomicAdd(counters[2], written);
-  atomicAdd(counters[3], seen);
-  atomicAdd(counters[4], facing_away);
+  atomicAdd(counters[0], counts.projected);
+  atomicAdd(counters[1], counts.projections);
+  atomicAdd(counters[2], counts.written);
+  atomicAdd(counters[3], counts.seen);
+  atomicAdd(counters[4], counts.facing_away);
 }

@@ -27,6 +27,8 @@ int cullMode(Culling culling) {
       return MIRAGE_KD_CULL_NONE;
     case Culling::kHull:
       return MIRAGE_KD_CULL_HULL;
+    case Culling::kInner:
+      return MIRAGE_KD_CULL_INNER;
     case Culling::kExact:
       break;
   }
@@ -42,10 +44,13 @@ KdGpuCull::KdGpuCull(const PointStore& store)
   for (const PointCloud& cloud : store.clouds()) {
     const uint32_t base = uint32_t(flat.size());
     roots.push_back(cloud.tree.empty() ? MIRAGE_KD_NO_ROOT : base);
-    for (const KdNode& n : cloud.tree.nodes())
+    for (size_t i = 0; i < cloud.tree.nodes().size(); ++i) {
+      const KdNode& n = cloud.tree.nodes()[i];
       flat.push_back({vec4(n.bounds.lo, 0.0f), vec4(n.bounds.hi, 0.0f),
                       uvec4(cloud.offset + n.begin, cloud.offset + n.end,
-                            n.leaf() ? 0u : base + n.first_child, n.child_count)});
+                            n.leaf() ? 0u : base + n.first_child, n.child_count),
+                      cloud.cones[i]});
+    }
   }
   nodes_.upload(std::span<const KdNodeGpu>(flat));
   roots_.upload(std::span<const uint32_t>(roots));
@@ -68,7 +73,8 @@ void KdGpuCull::reserve(gpu::Buffer& buffer, size_t& capacity, size_t count, siz
 }
 
 KdGpuCullResult KdGpuCull::run(const std::vector<C3rcData>& c3rcs,
-                               const std::vector<mat4>& matrices, Culling culling) {
+                               const std::vector<mat4>& matrices, Culling culling,
+                               bool cull_backfaces) {
   KdGpuCullResult result;
   const std::vector<PointCloud>& clouds = store_.clouds();
   const size_t n = clouds.size();
@@ -93,6 +99,7 @@ KdGpuCullResult KdGpuCull::run(const std::vector<C3rcData>& c3rcs,
   c3rcs_.upload(std::span<const C3rcData>(local_));
   program_.set("u_cloud_count", int(n));
   program_.set("u_culling", cullMode(culling));
+  program_.set("u_cull_backfaces", cull_backfaces ? 1 : 0);
   reserve(items_, item_capacity_, 0, sizeof(ivec4));
   reserve(queue_in_, in_capacity_, 0, sizeof(uvec2));
   reserve(queue_out_, out_capacity_, local_.size(), sizeof(uvec2));
@@ -131,6 +138,7 @@ KdGpuCullResult KdGpuCull::run(const std::vector<C3rcData>& c3rcs,
   result.cull.hull_rejects = state[MIRAGE_KD_STATE_HULL_REJECTS];
   result.cull.exact_rejects = state[MIRAGE_KD_STATE_EXACT_REJECTS];
   result.cull.fold_keeps = state[MIRAGE_KD_STATE_FOLD_KEEPS];
+  result.cull.cone_rejects = state[MIRAGE_KD_STATE_CONE_REJECTS];
   result.cull.leaves_kept = state[MIRAGE_KD_STATE_ITEMS];
   return result;
 }

@@ -28,9 +28,10 @@ class KdGpuCull {
   explicit KdGpuCull(const PointStore& store);
 
   // Culls the world-space C3RCs (a C3RC flagged MIRAGE_C3RC_DEGENERATE is skipped) against every
-  // cloud at its current transform (`matrices`: every instance's).
+  // cloud at its current transform (`matrices`: every instance's); `cull_backfaces`: drop the
+  // nodes whose normal cones face away (cullLeaves with the clouds' cones).
   KdGpuCullResult run(const std::vector<C3rcData>& c3rcs, const std::vector<mat4>& matrices,
-                      Culling culling);
+                      Culling culling, bool cull_backfaces);
 
   // The item buffer of the last run: ivec4(C3RC, first point, point count, floatBitsToInt(1)).
   const gpu::Buffer& items() const { return items_; }

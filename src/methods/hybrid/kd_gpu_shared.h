@@ -23,12 +23,14 @@
 #define MIRAGE_KD_STATE_HULL_REJECTS 3
 #define MIRAGE_KD_STATE_EXACT_REJECTS 4
 #define MIRAGE_KD_STATE_FOLD_KEEPS 5
+#define MIRAGE_KD_STATE_CONE_REJECTS 6
 #define MIRAGE_KD_STATE_SIZE 8
 
 // The culling modes (Culling in c3rc_cull.h).
 #define MIRAGE_KD_CULL_NONE 0
 #define MIRAGE_KD_CULL_HULL 1
-#define MIRAGE_KD_CULL_EXACT 2
+#define MIRAGE_KD_CULL_INNER 2
+#define MIRAGE_KD_CULL_EXACT 3
 
 #define MIRAGE_KD_CULL_GROUP 64  // invocations per workgroup: one queue entry each
 
@@ -42,12 +44,13 @@ struct KdNodeGpu {
   vec4 hi;
   uvec4 range;  // x, y: [begin, end) in the shared point buffer; z: first child (flat index);
                 // w: child count (0: a leaf)
+  vec4 cone;    // the normal cone of its points (normal_cone.h)
 };
 
 SHARED_END
 
 #ifndef MIRAGE_GLSL
-static_assert(sizeof(mirage::shading::KdNodeGpu) == 48, "KdNodeGpu layout (std430)");
+static_assert(sizeof(mirage::shading::KdNodeGpu) == 64, "KdNodeGpu layout (std430)");
 #endif
 
 #endif  // MIRAGE_METHODS_HYBRID_KD_GPU_SHARED_H

@@ -2,6 +2,7 @@
 
 #include "core/timer.h"
 #include "methods/hybrid/hybrid_shared.h"
+#include "methods/hybrid/normal_cone.h"
 
 namespace mirage {
 
@@ -22,6 +23,8 @@ PointStore::PointStore(const Scene& scene, const PointSetOptions& options,
     std::vector<uint32_t> order;
     cloud.tree = KdTree(set.positions, o, order);
     set.permute(order);
+    cloud.cones = normalCones(
+        cloud.tree, set.closed ? std::span<const vec3>(set.normals) : std::span<const vec3>());
     cloud.points = std::move(set);
     clouds_.push_back(std::move(cloud));
   }

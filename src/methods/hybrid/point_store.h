@@ -15,6 +15,9 @@ namespace mirage {
 struct PointCloud {
   PointSet points;
   KdTree tree;
+  // Per tree node: the normal cone of its points (normal_cone.h); kNoNormalCone throughout for an
+  // open surface, whose back-facing points are projected.
+  std::vector<vec4> cones;
   uint32_t offset = 0;  // index of its first point in the shared buffer
 };
 
