@@ -3,17 +3,15 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdlib>
-#include <numeric>
 
 #include "core/error.h"
 #include "core/timer.h"
 #include "gpu/buffer.h"
-#include "gpu/context.h"
 #include "methods/hybrid/c3rc_frame.h"
 #include "methods/hybrid/hybrid_shared.h"
 #include "methods/hybrid/kd_gpu_cull.h"
 #include "methods/hybrid/point_store.h"
-#include "methods/hybrid/splat_visibility.h"
+#include "methods/hybrid/splat_pass.h"
 #include "methods/probe_params.h"
 #include "methods/recapture_params.h"
 #include "render/base_colour.h"
@@ -55,13 +53,6 @@ KdTreeOptions treeOptions(const ParamValues& params) {
 // kept every scene measured within 0.2 dB reflector PSNR of every point (matched 2x2 sampling:
 // docs/data/hybrid-lod/) while it cut teapot-dragon's projections 13x.
 constexpr double kAutoLodDensity = 16.0;
-// The runs of work items one workgroup of the splatting pass projects (itemRuns). A software
-// rasteriser runs each workgroup as a task of one SIMD batch with its own set-up, and a run of
-// one C3RC's items loads the C3RC once: runs of up to 64 items took teapot-dragon's splatting
-// from 39 to 35 ms on llvmpipe. At most kMaxItemPoints points a run, as a merged item holds:
-// llvmpipe ends a shader after 65,535 loop iterations. A GPU needs many workgroups to fill its
-// cores: one item a run there.
-constexpr size_t kRunItemsSoftware = 64;
 constexpr double kMostLodDensity = 1.0e6;
 
 // --hybrid-lod: auto (kAutoLodDensity with the CPU culling; every point with the GPU traversal,
@@ -109,13 +100,12 @@ class HybridMethod final : public Method {
                            double(pixel_scale_ * pixel_scale_))),
         probes_(setup.params.integer("envmap-size")),
         recapture_(probeRecapture(setup.params)),
-        splat_program_(gpu::Program::compute("methods/hybrid/hybrid_splat.comp")),
+        splat_({first_only_, keep_backfaces_, splat_size_, pixel_scale_}),
         resolve_program_(
             gpu::Program::graphics("render/shaders/scene.vert", "methods/hybrid/hybrid.frag")),
         id_program_(
             gpu::Program::graphics("render/shaders/scene.vert", "methods/hybrid/triangle_id.frag")),
-        base_program_(baseColourProgram()),
-        run_items_(gpu::currentContextIsSoftware() ? kRunItemsSoftware : 1) {
+        base_program_(baseColourProgram()) {
     const Scene& scene = setup.gpu.scene();
     reflectors_ = scene.reflectorInstances();
     for (int i = 0; i < int(scene.instances.size()); ++i)
@@ -192,16 +182,16 @@ class HybridMethod final : public Method {
     s["splat_items"] = double(itemCount());
     s["cull_points_kept"] = double(last_.kept_points);
     s["lod_points"] = double(last_.lod_points);
-    s["points_projected"] = double(counters_[0]);
-    s["projections"] = double(counters_[1]);
-    s["splats_written"] = double(counters_[2]);
-    s["splat_candidates"] = double(counters_[MIRAGE_HYBRID_COUNTER_CANDIDATES]);
-    s["points_with_projection"] = double(counters_[3]);
-    s["points_facing_away"] = double(counters_[4]);
+    s["points_projected"] = double(splat_.counter(0));
+    s["projections"] = double(splat_.counter(1));
+    s["splats_written"] = double(splat_.counter(2));
+    s["splat_candidates"] = double(splat_.counter(MIRAGE_HYBRID_COUNTER_CANDIDATES));
+    s["points_with_projection"] = double(splat_.counter(3));
+    s["points_facing_away"] = double(splat_.counter(4));
     s["valid_projection_fraction"] =
-        counters_[0] ? double(counters_[3]) / double(counters_[0]) : 0.0;
+        splat_.counter(0) ? double(splat_.counter(3)) / double(splat_.counter(0)) : 0.0;
     s["projections_per_point"] =
-        store_.pointCount() ? double(counters_[1]) / double(store_.pointCount()) : 0.0;
+        store_.pointCount() ? double(splat_.counter(1)) / double(store_.pointCount()) : 0.0;
     s["visibility_ms"] = visibility_ms_;
     // Both paths: the whole backward phase (C3RCs and culling); on the GPU path with the move
     // into the clouds' spaces (CPU) and the culling pass up to its glFinish and read-back.
@@ -212,7 +202,7 @@ class HybridMethod final : public Method {
       s["cull_transform_ms"] = gpu_last_.transform_ms;
       s["cull_gpu_dispatches"] = double(gpu_last_.dispatches);
     }
-    s["splat_ms"] = splat_ms_;
+    s["splat_ms"] = splat_.ms();
     return s;
   }
 
@@ -296,61 +286,14 @@ class HybridMethod final : public Method {
   }
 
   void splat(FrameContext& frame) {
-    const ivec2 size = frame.target.size();
-    visibility_.begin(size_t(size.x) * size_t(size.y));
-    if (counter_buffer_.size() == 0) counter_buffer_ = gpu::Buffer(sizeof(counters_));
-    store_.bind(MIRAGE_BIND_HYBRID_POINTS, MIRAGE_BIND_HYBRID_POINT_ATTRIBUTES);
-    splat_ms_ = 0.0;
-    std::fill(std::begin(counters_), std::end(counters_), 0u);
-    if (itemCount() == 0) return;
-
-    c3rc_buffer_.upload(std::span<const C3rcData>(last_.c3rcs));
-    if (!gpu_cull_) item_buffer_.upload(std::span<const ivec4>(last_.items));
-    c3rc_buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_C3RCS);
-    (gpu_cull_ ? gpu_cull_->items() : item_buffer_)
-        .bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_ITEMS);
-    counter_buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_COUNTERS);
-    frame.target.depth().bind(MIRAGE_UNIT_HYBRID_DEPTH);
-    const mat4& proj = frame.view.projectionMatrix();
-    const std::vector<uint32_t> runs = splatRuns();
-    run_buffer_.upload(std::span<const uint32_t>(runs));
-    run_buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_RUNS);
-    const size_t run_count = runs.size() - 1;
-    splat_program_.set("u_run_count", int(run_count));
-    splat_program_.set("u_first_only", first_only_ ? 1 : 0);
-    splat_program_.set("u_splat_size", splat_size_);
-    splat_program_.set("u_pixel_scale", pixel_scale_);
-    splat_program_.set("u_proj", vec2(proj[2][2], proj[3][2]));
-    splat_program_.set("u_occlusion", 0.01f);
-    splat_program_.set("u_keep_backfaces", keep_backfaces_ ? 1 : 0);
-    const bool timing = frame.timer != nullptr;
-    if (timing) glFinish();
-    Stopwatch watch;
-    size_t candidates = 0;
-    do {  // again, with a larger candidate buffer, when the candidates overflowed it
-      splat_program_.set("u_candidate_capacity", int(visibility_.prepare()));
-      SplatVisibility::clearWords(counter_buffer_, 0u);
-      splat_program_.use();
-      glDispatchCompute(GLuint(std::min<size_t>(run_count, 65535)), 1, 1);
-      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-      counter_buffer_.download(counters_, sizeof(counters_));
-      candidates = counters_[MIRAGE_HYBRID_COUNTER_CANDIDATES];
-    } while (!visibility_.fitted(candidates));
-    visibility_.pickWinners(candidates);
-    if (timing) {
-      glFinish();
-      splat_ms_ = watch.ms();
-    }
+    SplatItems items;
+    items.count = itemCount();
+    if (gpu_cull_)
+      items.gpu = &gpu_cull_->items();
+    else
+      items.cpu = &last_.items;
+    splat_.run(frame, store_, last_.c3rcs, items);
     checkEveryPairProjected();
-  }
-
-  // The splatting pass's runs of items (itemRuns); the GPU culling's items, whose strides are all
-  // one and whose count only is known here, one a run.
-  std::vector<uint32_t> splatRuns() const {
-    if (!gpu_cull_) return itemRuns(last_.items, kMaxItemPoints, run_items_);
-    std::vector<uint32_t> runs(itemCount() + 1);
-    std::iota(runs.begin(), runs.end(), 0u);
-    return runs;
   }
 
   // The splatting shader counts the (point, C3RC) pairs it projected; fewer than the items hold
@@ -359,7 +302,7 @@ class HybridMethod final : public Method {
   // round its strided count differently on the GPU, hence the slack of one per item.
   void checkEveryPairProjected() const {
     if (gpu_cull_) return;
-    const long long projected = counters_[0], expected = last_.lod_points;
+    const long long projected = splat_.counter(0), expected = last_.lod_points;
     if (std::llabs(projected - expected) > (long long)last_.items.size())
       throwRuntime(
           "hybrid: the splatting pass projected {} of the {} (point, C3RC) pairs it was given: "
@@ -374,20 +317,17 @@ class HybridMethod final : public Method {
   float lod_density_;
   ProbeArray probes_;  // the background, one cube per reflector
   RecapturePolicy recapture_;
-  gpu::Program splat_program_, resolve_program_, id_program_, base_program_;
-  size_t run_items_;  // the most work items a run of the splatting pass takes
-  SplatVisibility visibility_;
+  SplatPass splat_;
+  gpu::Program resolve_program_, id_program_, base_program_;
   std::vector<int> reflectors_, background_;
   gpu::Texture ids_;
   std::unique_ptr<gpu::Framebuffer> ids_fbo_;
   ivec2 ids_size_{0, 0};
   std::vector<uvec2> ids_pixels_;  // the triangle IDs read back, reused frame to frame
-  gpu::Buffer c3rc_buffer_, item_buffer_, run_buffer_, counter_buffer_;
-  uint32_t counters_[MIRAGE_HYBRID_COUNTERS] = {};
   C3rcFrame last_;
   std::unique_ptr<KdGpuCull> gpu_cull_;  // --hybrid-cull-on gpu
   KdGpuCullResult gpu_last_;
-  double visibility_ms_ = 0.0, splat_ms_ = 0.0;
+  double visibility_ms_ = 0.0;
 };
 
 }  // namespace

@@ -1,0 +1,61 @@
+// The forward phase's splatting pass (the hybrid paper, §6; hybrid_splat.comp): every work item's
+// points projected through its C3RC and splatted, a workgroup per run of consecutive items
+// (itemRuns), then the per-pixel visibility's second pass (splat_visibility.h). The pass owns its
+// program, its buffers and the counters the shader adds into.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gpu/buffer.h"
+#include "gpu/program.h"
+#include "methods/hybrid/c3rc.h"
+#include "methods/hybrid/hybrid_shared.h"
+#include "methods/hybrid/point_store.h"
+#include "methods/hybrid/splat_visibility.h"
+#include "methods/method.h"
+
+namespace mirage {
+
+struct SplatSettings {
+  bool first_only = false;      // the first projection within a C3RC only
+  bool keep_backfaces = false;  // project the back-facing points of closed objects too
+  int splat_size = 0;           // frame pixels a side; 0: from the point spacing
+  int pixel_scale = 1;          // frame pixels per output pixel along a side (--ssaa)
+};
+
+// The items to splat: on the CPU (uploaded, and grouped into runs), or already on the GPU
+// (`count` of them, one a run: only their count is known here).
+struct SplatItems {
+  const std::vector<ivec4>* cpu = nullptr;
+  const gpu::Buffer* gpu = nullptr;
+  size_t count = 0;
+};
+
+class SplatPass {
+ public:
+  explicit SplatPass(const SplatSettings& settings);
+
+  // Splats `items` (C3RCs `c3rcs`, world space) into the frame's visibility words; the resolve
+  // pass reads the winners. Times itself when the frame is timed.
+  void run(FrameContext& frame, PointStore& store, const std::vector<C3rcData>& c3rcs,
+           const SplatItems& items);
+
+  // The shader's counters of the last run (MIRAGE_HYBRID_COUNTERS: pairs given, projections,
+  // splats, pairs projecting, pairs facing away, candidates).
+  uint32_t counter(int i) const { return counters_[i]; }
+  double ms() const { return ms_; }
+
+ private:
+  std::vector<uint32_t> runs(const SplatItems& items) const;
+
+  SplatSettings settings_;
+  gpu::Program program_;
+  size_t run_items_;  // the most work items a run takes
+  SplatVisibility visibility_;
+  gpu::Buffer c3rc_buffer_, item_buffer_, run_buffer_, counter_buffer_;
+  uint32_t counters_[MIRAGE_HYBRID_COUNTERS] = {};
+  double ms_ = 0.0;
+};
+
+}  // namespace mirage
