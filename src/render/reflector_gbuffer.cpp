@@ -10,7 +10,9 @@ namespace mirage {
 
 ReflectorGBuffer::ReflectorGBuffer()
     : reflector_program_(gpu::Program::graphics(
-          "render/shaders/scene.vert", "render/shaders/base_colour.frag", {"MIRAGE_GBUFFER 1"})) {}
+          "render/shaders/scene.vert", "render/shaders/base_colour.frag", {"MIRAGE_GBUFFER 1"})),
+      depth_program_(
+          gpu::Program::graphics("render/shaders/scene.vert", "render/shaders/depth_only.frag")) {}
 
 void ReflectorGBuffer::fit(const FrameTarget& target) {
   const ivec2 size = target.size();

@@ -71,6 +71,9 @@ class ReflectorGBuffer {
   // Reflectors at their base colour with their normals, materials and ids (base_colour.frag
   // under MIRAGE_GBUFFER).
   const gpu::Program& reflectorProgram() const { return reflector_program_; }
+  // The reflectors' depth alone (depth_only.frag): the pre-pass when no reflector takes the
+  // screen pass.
+  const gpu::Program& depthProgram() const { return depth_program_; }
   // Which way each reflector of `options.own` (instances; null: every reflector) goes: the
   // screen-space pass, or with `options.triangles` its triangles — for ReflectorPass::kAuto
   // where they are large on the screen (screenPassPays).
@@ -103,7 +106,7 @@ class ReflectorGBuffer {
                             const FrameSettings& settings, const gpu::Program& program,
                             const ShadeOptions& options, const std::vector<ivec4>& rectangles);
 
-  gpu::Program reflector_program_;
+  gpu::Program reflector_program_, depth_program_;
   ivec2 size_{0};
   GLuint color_id_ = 0, depth_id_ = 0;
   gpu::Texture normals_;

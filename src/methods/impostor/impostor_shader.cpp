@@ -63,11 +63,12 @@ ReflectorPasses ImpostorShader::draw(FrameContext& frame, ReflectorGBuffer& gbuf
     frame.drawOwnReflectors(gbuffer.reflectorProgram());
   } else {
     // Nothing for the screen pass: the reflectors' depth alone, for the pass over their
-    // triangles (it writes the rest), and no G-buffer to clear and fill.
+    // triangles (it writes the rest), and no G-buffer to clear and fill. The colour writes are
+    // masked: a shader without outputs leaves the attachments undefined otherwise.
     frame.target.bind();
     frame.passes.begin(frame.view, frame.settings);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    frame.drawOwnReflectors(gbuffer.reflectorProgram());
+    frame.drawOwnReflectors(gbuffer.depthProgram());
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   }
   gbuffer.shade(frame.target, frame.passes, frame.view, frame.settings, screen_, options, plan);
