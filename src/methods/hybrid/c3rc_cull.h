@@ -91,7 +91,7 @@ struct CullCounters {
 // Appends the index of every leaf of `tree` that may hold a point the C3RC `c` (in the tree's
 // space) projects. `cones` (when not empty): the nodes' normal cones (normal_cone.h), which drop
 // the nodes whose points all face away from the C3RC's triangle — for a splatting that skips
-// such points (--hybrid-backfaces skip); culling kNone tests nothing.
+// such points (--hybrid-backfaces cull); culling kNone tests nothing.
 void cullLeaves(const KdTree& tree, const C3rcData& c, Culling culling, std::span<const vec4> cones,
                 std::vector<uint32_t>& leaves, CullCounters& counters);
 

@@ -9,6 +9,7 @@
 
 #include "core/check.h"
 #include "core/timer.h"
+#include "methods/hybrid/hybrid_shared.h"
 
 namespace mirage {
 
@@ -104,15 +105,9 @@ void setLodStride(Local& local, size_t first_item, float density, uint32_t pixel
   const float stride = lodStride(density, pixels, kept);
   for (size_t k = first_item; k < local.items.size(); ++k) {
     local.items[k].w = std::bit_cast<int>(stride);
-    local.lod_points += (long long)(std::ceil(float(local.items[k].z) / stride));
+    local.lod_points += shading::hybrid_taken_points(local.items[k].z, stride);
   }
   local.kept_points += kept;
-}
-
-// The points an item takes: every stride-th of its count (hybrid_splat.comp's `taken`).
-long long takenPoints(const ivec4& item) {
-  const float stride = std::bit_cast<float>(item.w);
-  return stride > 1.0f ? (long long)(std::ceil(float(item.z) / stride)) : item.z;
 }
 
 }  // namespace
@@ -123,7 +118,8 @@ std::vector<uint32_t> itemRuns(const std::vector<ivec4>& items, long long max_po
   long long points = 0;
   size_t count = 0;
   for (size_t i = 0; i < items.size(); ++i) {
-    const long long taken = takenPoints(items[i]);
+    const long long taken =
+        shading::hybrid_taken_points(items[i].z, std::bit_cast<float>(items[i].w));
     if (runs.empty() || points + taken > max_points || count >= max_items) {
       runs.push_back(uint32_t(i));
       points = 0;

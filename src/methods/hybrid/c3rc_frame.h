@@ -21,7 +21,7 @@ struct C3rcFrameOptions {
   int min_pixels = 1;  // reflector triangles with fewer visible pixels show the environment
   Culling culling = Culling::kInner;
   // Drop the kd-nodes whose points all face away from the triangle (normal_cone.h): set where the
-  // splatting skips such points (--hybrid-backfaces skip).
+  // splatting skips such points (--hybrid-backfaces cull).
   bool cull_backfaces = false;
   float reach = 1.0f;      // the largest reflector-to-point distance worth searching
   bool eye_scaled = true;  // construction rays scaled by the eye distance (else unit: the paper)

@@ -46,6 +46,13 @@ struct PointAttributes {
   vec4 albedo;  // rgb: linear albedo; w: 1 where the object is closed (its back faces hidden)
 };
 
+// The points a work item of `count` points takes at the level of detail's `stride` (every
+// stride-th, in order): what the splatting shader projects, and what the host counts and groups
+// into runs by.
+SHARED_FN int hybrid_taken_points(int count, float stride) {
+  return stride > 1.0f ? int(ceil(float(count) / stride)) : count;
+}
+
 // A point whose normal faces away from all three corners of a reflector triangle faces away
 // from every point of it (each is a convex combination of the corners): on a closed surface it
 // is hidden from that triangle, and the splatting skips it before the cubic.

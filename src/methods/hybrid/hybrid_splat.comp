@@ -101,7 +101,7 @@ void project_item(ivec4 it, C3rcData c, inout Counts counts) {
   // subsample), each standing for `stride` points, so its spacing grows by sqrt(stride).
   float stride = max(intBitsToFloat(it.w), 1.0f);
   float grown = sqrt(stride);
-  int taken = stride > 1.0f ? int(ceil(float(it.z) / stride)) : it.z;
+  int taken = hybrid_taken_points(it.z, stride);
   // An item lies in one point cloud: one instance, its matrices and closedness loaded once.
   int instance = int(positions[it.y].w);
   mat4 model = instances[instance].model;
