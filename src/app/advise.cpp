@@ -49,7 +49,7 @@ class Advisor {
         reflectors_(scene.reflectorInstances()) {}
 
   Advice run() {
-    if (reflectors_.empty()) throwInput("scene '{}' has no reflector to advise on", scene_.name);
+    if (reflectors_.empty()) throwInput("scene '{}' has no reflector to advise on", scene_name());
     const size_t r_count = reflectors_.size(), c_count = setup_.candidates.size();
     const size_t views = setup_.views.size();
     const size_t timed_frames = size_t(setup_.frames) * views + 2;
@@ -57,46 +57,20 @@ class Advisor {
                       (2 * c_count + 2) * views + (c_count * (r_count + 1) + 3) * timed_frames);
     progress_ = &progress;
     Advice a;
-    a.candidates = setup_.candidates;
     for (int i : reflectors_) a.reflectors.push_back(scene_.instances[size_t(i)].name);
     references();
     a.pixels = pixels_;
-    a.measured.assign(r_count, std::vector<Measured>(c_count));
-    for (size_t c = 0; c < c_count; ++c) {
-      const Candidate& cand = setup_.candidates[c];
-      // Each reflector as a composite draws it (an entry of its own: a method drawn beside
-      // others may show what it sees otherwise, as planar its curved reflectors), then the
-      // method alone, the single-method frame.
-      std::string each;
-      for (const std::string& name : a.reflectors)
-        each += (each.empty() ? "" : ";") + name + "=" + cand.label;
-      const std::vector<double> alone = reflectorErrors(cand.method, cand.params, "");
-      const std::vector<double> sse = r_count > 1 ? reflectorErrors("mixed", {}, each) : alone;
-      double sum = 0.0;
-      for (size_t r = 0; r < r_count; ++r) {
-        a.measured[r][c].sse = sse[r];
-        sum += alone[r];
-      }
-      a.single_sse.push_back(sum);
-    }
+    a.measured.assign(r_count, {});
+    for (const Candidate& cand : setup_.candidates) attempt(a, cand, [&] { measureQuality(a, cand); });
     a.none_ms = time("none", {}, "").total_ms;
     const Timed base = time("mixed", {}, "*=none");
     a.base_ms = base.total_ms - base.part_ms.at(0);
-    for (size_t c = 0; c < c_count; ++c) {
-      const Candidate& cand = setup_.candidates[c];
-      a.single_ms.push_back(time(cand.method, cand.params, "").total_ms);
-      double parts = 0.0, least = 1e300;
-      for (size_t r = 0; r < r_count; ++r) {
-        const std::string text = a.reflectors[r] + "=" + cand.label + ";*=none";
-        a.measured[r][c].part_ms = time("mixed", {}, text).part_ms.at(0);
-        parts += a.measured[r][c].part_ms;
-        least = std::min(least, a.measured[r][c].part_ms);
-      }
-      // The entry's overhead: what the parts timed one reflector at a time add up to beyond the
-      // candidate drawing all of them in one entry (its frame less the rest of a frame).
-      const double all = a.single_ms.back() - a.base_ms;
-      a.fixed_ms.push_back(r_count > 1 ? std::clamp((parts - all) / double(r_count - 1), 0.0, least)
-                                       : 0.0);
+    for (size_t c = 0; c < a.candidates.size();) {
+      const Candidate cand = a.candidates[c];
+      if (attempt(a, cand, [&] { measureCost(a, c); }))
+        ++c;
+      else
+        drop(a, c);
     }
     a.budget_ms = setup_.budget.ms(a.none_ms);
     choose(a);
@@ -108,6 +82,73 @@ class Advisor {
   }
 
  private:
+  const std::string& scene_name() const { return scene_.name; }
+
+  // Runs one candidate's `measure`; where the method fails (a RuntimeError: an error of its own,
+  // or a fallback to another method), records why in a.failed and says so. Whether it worked.
+  template <typename Measure>
+  bool attempt(Advice& a, const Candidate& cand, Measure&& measure) {
+    try {
+      measure();
+      return true;
+    } catch (const RuntimeError& e) {
+      a.failed.push_back({cand.label, e.what()});
+      spdlog::warn("advise: candidate '{}' failed, left out: {}", cand.label, e.what());
+      if (a.failed.size() == setup_.candidates.size())
+        throwRuntime("advise: every candidate failed on '{}' (the last: {})", scene_name(),
+                     e.what());
+      return false;
+    }
+  }
+
+  // The candidate's error on each reflector: each as a composite draws it (an entry of its own:
+  // a method drawn beside others may show what it sees otherwise, as planar its curved
+  // reflectors), then the method alone, the single-method frame. Appends it to a.candidates.
+  void measureQuality(Advice& a, const Candidate& cand) {
+    const size_t r_count = reflectors_.size();
+    std::string each;
+    for (const std::string& name : a.reflectors)
+      each += (each.empty() ? "" : ";") + name + "=" + cand.label;
+    const std::vector<double> alone = reflectorErrors(cand.method, cand.params, "");
+    const std::vector<double> sse = r_count > 1 ? reflectorErrors("mixed", {}, each) : alone;
+    double sum = 0.0;
+    for (size_t r = 0; r < r_count; ++r) {
+      a.measured[r].push_back({sse[r], 0.0});
+      sum += alone[r];
+    }
+    a.candidates.push_back(cand);
+    a.single_sse.push_back(sum);
+  }
+
+  // Candidate c's costs: its single-method frame, each reflector's part, its entry overhead.
+  void measureCost(Advice& a, size_t c) {
+    const Candidate& cand = a.candidates[c];
+    const size_t r_count = reflectors_.size();
+    const double single = time(cand.method, cand.params, "").total_ms;
+    std::vector<double> part(r_count);
+    double parts = 0.0, least = 1e300;
+    for (size_t r = 0; r < r_count; ++r) {
+      const std::string text = a.reflectors[r] + "=" + cand.label + ";*=none";
+      part[r] = time("mixed", {}, text).part_ms.at(0);
+      parts += part[r];
+      least = std::min(least, part[r]);
+    }
+    for (size_t r = 0; r < r_count; ++r) a.measured[r][c].part_ms = part[r];
+    a.single_ms.push_back(single);
+    // The entry's overhead: what the parts timed one reflector at a time add up to beyond the
+    // candidate drawing all of them in one entry (its frame less the rest of a frame).
+    const double all = single - a.base_ms;
+    a.fixed_ms.push_back(r_count > 1 ? std::clamp((parts - all) / double(r_count - 1), 0.0, least)
+                                     : 0.0);
+  }
+
+  // Removes candidate c, whose costs failed, from the lists its quality filled.
+  static void drop(Advice& a, size_t c) {
+    a.candidates.erase(a.candidates.begin() + std::ptrdiff_t(c));
+    a.single_sse.erase(a.single_sse.begin() + std::ptrdiff_t(c));
+    for (auto& row : a.measured) row.erase(row.begin() + std::ptrdiff_t(c));
+  }
+
   void choose(Advice& a) const {
     // Each reflector's cost beyond its candidate's entry overhead, paid once per entry.
     std::vector<std::vector<Option>> options(a.reflectors.size());
@@ -168,12 +209,19 @@ class Advisor {
     return {std::move(params), settings};
   }
 
+  // A method that fell back to another shows the other's frame under its name: a failure here.
+  static void refuseFallback(const Method& m, const std::string& method) {
+    if (!m.fallbackReason().empty())
+      throwRuntime("'{}' fell back to 'envmap': {}", method, m.fallbackReason());
+  }
+
   RenderedFrame renderQuality(const std::string& method,
                               const std::map<std::string, std::string>& params,
                               const std::string& assign, const CalibrationView& v) {
     const auto [given, settings] = made(method, params, assign, setup_.ssaa);
     auto m = quality_.createMethod(method, given, settings);
     quality_.render(*m, View(v.camera, quality_.size()), v.time, settings);
+    refuseFallback(*m, method);
     progress_->advance();
     return downsample(quality_.read(), setup_.ssaa);
   }
@@ -204,6 +252,7 @@ class Advisor {
     const CalibrationView& first = setup_.views.front();
     for (int i = 0; i < 2; ++i) {
       timing_.render(*m, View(first.camera, setup_.size), first.time, settings);
+      refuseFallback(*m, method);
       progress_->advance();
     }
     std::vector<double> total;

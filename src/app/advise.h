@@ -66,10 +66,18 @@ struct Measured {
   double part_ms = 0.0;  // its part of the frame (median), drawing this reflector alone
 };
 
+// A candidate that could not be measured: the method failed (an error of its own, or it fell
+// back to another on this driver), with what it said.
+struct FailedCandidate {
+  std::string label;
+  std::string reason;
+};
+
 struct Advice {
   std::vector<std::string> reflectors;  // instance names, in scene order
   std::vector<size_t> pixels;           // each reflector's pixels over all views
-  std::vector<Candidate> candidates;
+  std::vector<Candidate> candidates;    // those measured: every list below is indexed by them
+  std::vector<FailedCandidate> failed;  // the others, left out of the choice
   std::vector<std::vector<Measured>> measured;  // [reflector][candidate]
   double none_ms = 0.0;                         // the `none` frame's median
   double base_ms = 0.0;  // a composite's frame without its parts: update, direct part, overhead
@@ -88,7 +96,9 @@ struct Advice {
   double psnr(double sse) const;  // over every reflector pixel of every view
 };
 
-// Measures, chooses and measures the choice. Needs a current OpenGL context.
+// Measures, chooses and measures the choice; a candidate that fails is reported in
+// Advice::failed and left out, and only when every candidate fails is that an error
+// (RuntimeError). Needs a current OpenGL context.
 Advice advise(const Scene& scene, const AdviseSetup& setup);
 
 }  // namespace mirage::app

@@ -170,6 +170,10 @@ nlohmann::json adviceJson(const Advice& a, const std::string& scene_name) {
     singles.back()["entry_overhead_ms"] = a.fixed_ms[c];
   }
   j["single_methods"] = singles;
+  nlohmann::json failed = nlohmann::json::array();
+  for (const FailedCandidate& f : a.failed)
+    failed.push_back({{"candidate", f.label}, {"reason", f.reason}});
+  j["failed"] = failed;
   return j;
 }
 
@@ -194,7 +198,15 @@ std::string adviceHtml(const Advice& a, const std::string& scene_name) {
       row(std::string("best single method") + (within ? " within the budget: " : ": ") +
               a.candidates[size_t(c)].label,
           a.single_sse[size_t(c)], a.single_ms[size_t(c)]);
-  h += "</table><h2>Each reflector's candidates (the chosen one ringed, the front in green)</h2>";
+  h += "</table>";
+  if (!a.failed.empty()) {
+    h += "<h2>Candidates that failed (left out of the choice)</h2><table>";
+    for (const FailedCandidate& f : a.failed)
+      h += "<tr><td style='text-align:left'>" + escape(f.label) +
+           "</td><td style='text-align:left'>" + escape(f.reason) + "</td></tr>";
+    h += "</table>";
+  }
+  h += "<h2>Each reflector's candidates (the chosen one ringed, the front in green)</h2>";
   for (size_t r = 0; r < a.reflectors.size(); ++r)
     h += "<figure>" + paretoSvg(a, r) + "<figcaption>" + escape(a.reflectors[r]) +
          fmt::format(" ({} pixels)", a.pixels[r]) + "</figcaption></figure>";

@@ -65,6 +65,9 @@ int runAdvise(AdviseArgs& args) {
   writeFileAtomic(dir + "assign.txt", flags + "\n");
   writeFileAtomic(dir + "report.html", adviceHtml(a, scene.name));
   spdlog::info("advise: {}", flags);
+  if (!a.failed.empty())
+    spdlog::warn("advise: {} of {} candidates failed and were left out (advice.json, \"failed\")",
+                 a.failed.size(), setup.candidates.size());
   spdlog::info(
       "advise: predicted {:.2f} dB in {:.2f} ms, measured {:.2f} dB in {:.2f} ms "
       "(budget {:.2f} ms); {}report.html",

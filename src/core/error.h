@@ -43,12 +43,20 @@ class RuntimeError : public Error {
   explicit RuntimeError(const std::string& message) : Error(ExitCode::kFailure, message) {}
 };
 
-// The OpenGL driver refused what a method asked: a shader that does not compile or link, a
-// texture or buffer beyond a driver limit, GPU memory exhausted. The frame renderer answers it by
-// falling back to `envmap` with a warning (methods/method_guard.h).
+// The OpenGL driver refused what a method asked for within its rights: a texture, buffer or
+// storage block beyond a driver limit, GPU memory exhausted, a shader's loops beyond what the
+// driver lets them run (gpu/loop_budget.h). The frame renderer answers it by falling back to
+// `envmap` with a warning (methods/method_guard.h).
 class GpuError : public RuntimeError {
  public:
   explicit GpuError(const std::string& message) : RuntimeError(message) {}
+};
+
+// A program of mirage's that does not compile or link: a bug of ours, never a driver limit to
+// fall back from (exit 1, the program named with the driver's log).
+class ShaderError : public RuntimeError {
+ public:
+  explicit ShaderError(const std::string& message) : RuntimeError(message) {}
 };
 
 template <typename... Args>

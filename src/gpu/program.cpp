@@ -3,7 +3,11 @@
 #include <algorithm>
 #include <atomic>
 #include <cstring>
+#include <map>
+#include <mutex>
 #include <regex>
+
+#include <fmt/format.h>
 
 #include "core/error.h"
 #include "gpu/context.h"
@@ -38,6 +42,19 @@ std::atomic<bool>& uniformChecksFlag() {
   return on;
 }
 
+std::mutex& compiledMutex() {
+  static std::mutex m;
+  return m;
+}
+std::map<std::string, long long>& compiledPaths() {
+  static std::map<std::string, long long> paths;
+  return paths;
+}
+void noteCompiled(const std::string& path) {
+  std::lock_guard lock(compiledMutex());
+  ++compiledPaths()[path];
+}
+
 // The compiler's or linker's messages about a shader or a program.
 std::string infoLog(GLuint id, bool is_program) {
   GLint length = 0;
@@ -58,8 +75,10 @@ Handle<ShaderTraits> compileStage(GLenum stage, const std::string& path,
   GLint ok = GL_FALSE;
   glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
   if (!ok)
-    throwGpu("shader '{}' does not compile:\n{}", path,
-             annotateShaderLog(infoLog(shader.id(), false).c_str(), source.files));
+    throw ShaderError(fmt::format("shader '{}' does not compile:\n{}", path,
+                                  annotateShaderLog(infoLog(shader.id(), false).c_str(),
+                                                    source.files)));
+  noteCompiled(path);
   return shader;
 }
 
@@ -70,7 +89,9 @@ Handle<ProgramTraits> link(const std::vector<GLuint>& shaders, const std::string
   for (GLuint s : shaders) glDetachShader(program.id(), s);
   GLint ok = GL_FALSE;
   glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
-  if (!ok) throwGpu("program '{}' does not link:\n{}", what, infoLog(program.id(), true).c_str());
+  if (!ok)
+    throw ShaderError(
+        fmt::format("program '{}' does not link:\n{}", what, infoLog(program.id(), true).c_str()));
   return program;
 }
 
@@ -113,6 +134,11 @@ GLint Program::location(const char* name) const {
     throwRuntime("program '{}': set() of uniform '{}', which its sources do not declare",
                  sources_->what, name);
   return at;
+}
+
+std::map<std::string, long long> compiledShaderFiles() {
+  std::lock_guard lock(compiledMutex());
+  return compiledPaths();
 }
 
 bool uniformChecks() {

@@ -8,6 +8,7 @@
 // (unused under this program's defines) stays a silent no-op, as GL has it.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -55,6 +56,11 @@ class Program {
   Handle<ProgramTraits> handle_;
   std::shared_ptr<Sources> sources_;
 };
+
+// The shader files (paths under src/) this process has compiled a stage from, with how many
+// times: what the test of every program's variants checks it reached
+// (tests/methods/every_program_test.cpp).
+std::map<std::string, long long> compiledShaderFiles();
 
 bool uniformChecks();
 void setUniformChecks(bool on);

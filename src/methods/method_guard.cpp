@@ -1,5 +1,7 @@
 #include "methods/method_guard.h"
 
+#include <atomic>
+
 #include <spdlog/spdlog.h>
 
 #include "core/error.h"
@@ -7,6 +9,8 @@
 namespace mirage {
 
 namespace {
+
+std::atomic<long long> g_fallbacks{0};
 
 // Runs `attempt`; where the driver refuses it (a GpuError), `recover` gets the error.
 template <typename Attempt, typename Recover>
@@ -20,6 +24,10 @@ void orRecover(Attempt&& attempt, Recover&& recover) {
 
 }  // namespace
 
+long long methodFallbacks() {
+  return g_fallbacks.load();
+}
+
 MethodGuard::MethodGuard(std::string requested, const Factory& make, Factory fallback)
     : requested_(std::move(requested)), fallback_(std::move(fallback)) {
   orRecover([&] { current_ = make(); }, [&](const GpuError& e) { fallBack(e); });
@@ -30,6 +38,7 @@ void MethodGuard::fallBack(const GpuError& error) {
     throwGpu("method '{}' fell back to 'envmap' ({}), which the driver refused too: {}", requested_,
              reason_, error.what());
   reason_ = error.what();
+  ++g_fallbacks;
   spdlog::warn("method '{}' cannot run on this OpenGL driver: {}; drawing with 'envmap' instead",
                requested_, reason_);
   current_.reset();  // its GL objects go before envmap makes its own

@@ -83,5 +83,38 @@ TEST_F(AdviseCli, NothingFitsSaysWhatTheCheapestCosts) {
   }
 }
 
+// A candidate that fails (here zexel, through a broken copy of its resolve shader put before the
+// embedded one: a shader of ours that does not compile, an error and no fallback) is reported in
+// advice.json and the report with its reason, and the others are advised on; only when every
+// candidate fails is advise an error (exit 1).
+TEST_F(AdviseCli, ACandidateThatFailsIsReportedAndLeftOut) {
+  const fs::path dir = testTempDir("advise-cli-failed");
+  writeText(dir / "shaders/methods/zexel/zexel_resolve.comp", "this is not GLSL\n");
+  const std::string env = "MIRAGE_SHADER_DIR=" + (dir / "shaders").string();
+  const std::string common =
+      "advise --scene gallery --size 64x48 --ssaa 1 --views 0 --frames 1 --budget 1000 ";
+  const CliResult r =
+      runMirage(common + "--methods envmap-box,zexel -o " + (dir / "out").string(), env);
+  ASSERT_EQ(r.code, 0) << r.output;
+  const nlohmann::json a = readJsonFile(dir / "out/advice.json");
+  ASSERT_EQ(a["failed"].size(), 2u) << a["failed"].dump(1) << "zexel and zexel:zexel-size=256";
+  for (const auto& f : a["failed"]) {
+    EXPECT_EQ(f["candidate"].get<std::string>().rfind("zexel", 0), 0u) << f.dump();
+    EXPECT_NE(f["reason"].get<std::string>().find("zexel_resolve.comp' does not compile"),
+              std::string::npos)
+        << f.dump();
+  }
+  for (const auto& c : a["candidates"])
+    EXPECT_EQ(c["candidate"].get<std::string>().rfind("envmap-box", 0), 0u) << c.dump();
+  EXPECT_NE(a["assignment"].get<std::string>().find("envmap-box"), std::string::npos);
+  std::ifstream html(dir / "out/report.html");
+  const std::string page((std::istreambuf_iterator<char>(html)), std::istreambuf_iterator<char>());
+  EXPECT_NE(page.find("Candidates that failed"), std::string::npos);
+
+  const CliResult none = runMirage(common + "--methods zexel -o " + (dir / "none").string(), env);
+  EXPECT_EQ(none.code, 1) << none.output;
+  EXPECT_NE(none.output.find("every candidate failed"), std::string::npos) << none.output;
+}
+
 }  // namespace
 }  // namespace mirage::test

@@ -83,8 +83,9 @@ TEST_F(FileSceneCli, AModelOfManyPartsRendersWithDepthMaps) {
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_EQ(r.output.find("cannot run on this OpenGL driver"), std::string::npos) << r.output;
   r = runMirage("render --scene " + scene +
-                " --camera cam_a --method depthmap --impostor-groups per-object --size 96x64 -o " +
-                out);
+                    " --camera cam_a --method depthmap --impostor-groups per-object --size 96x64 -o " +
+                    out,
+                "", kFallbackExpected);
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_NE(r.output.find("--impostor-groups auto (34 groups) would fit"), std::string::npos)
       << r.output;

@@ -59,8 +59,8 @@ TEST(SceneCli, ScenesListsAssetScenesByAvailability) {
   fs::path assets = testTempDir("scene-cli") / "assets";
   fs::create_directories(assets);
   std::string env = "MIRAGE_ASSET_DIR=" + assets.string();
-  CliResult out = runMirage("scenes", env, "2>/dev/null");
-  CliResult err = runMirage("scenes", env, "2>&1 >/dev/null");
+  CliResult out = runMirage("scenes", env, Fallback::kFails, "2>/dev/null");
+  CliResult err = runMirage("scenes", env, Fallback::kFails, "2>&1 >/dev/null");
   EXPECT_EQ(out.code, 0);
   EXPECT_NE(out.output.find("spheres9\n"), std::string::npos) << out.output;
   EXPECT_EQ(out.output.find("teapots4"), std::string::npos) << out.output;
@@ -78,7 +78,7 @@ TEST(SceneCli, ScenesListsAssetScenesByAvailability) {
        {"apartment", "bridge", "city", "dawn", "esplanade", "forest", "hall", "lab", "lobby",
         "night", "park", "sky", "studio", "sunrise", "sunset", "venice", "warehouse", "workshop"})
     writeExr((assets / "hdri" / (std::string(hdri) + ".exr")).string(), Image(8, 4, vec4(1.0f)));
-  out = runMirage("scenes", env, "2>/dev/null");
+  out = runMirage("scenes", env, Fallback::kFails, "2>/dev/null");
   EXPECT_NE(out.output.find("teapots4\n"), std::string::npos) << out.output;
   CliResult missing = runMirage("render --scene dragon --method raytrace -o x.png", env);
   EXPECT_EQ(missing.code, 2) << missing.output;

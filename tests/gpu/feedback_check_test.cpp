@@ -26,6 +26,7 @@ class FeedbackCheck : public GlTest {
     gpu::setFeedbackChecks(was_on_);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glUseProgram(0);
+    GlTest::TearDown();
   }
   bool was_on_ = false;
 };

@@ -248,10 +248,10 @@ TEST(HybridC3rcFrame, DegenerateReflectorTrianglesAreSkippedAndCounted) {
   EXPECT_EQ(store.pointCount(), 0u);
 }
 
-// The splatting pass's runs cover every item once, in order, and stay within their caps: at most
-// `max_points` points taken (the strides applied) unless one item alone holds more, and at most
-// `max_items` items.
-TEST(HybridC3rcFrame, ItemRunsCoverEveryItemWithinTheirCaps) {
+// The splatting pass's runs cover every item's taken points (the strides applied) once, in
+// order, and each stays within the loop budget and the item cap; greedy: a run ends only where
+// the next point step or item would not fit.
+TEST(HybridC3rcFrame, ItemRunsCoverEveryPointOnceWithinTheLoopBudget) {
   std::mt19937 rng(5);
   std::uniform_int_distribution<int> count(1, 4096);
   std::uniform_real_distribution<float> stride(1.0f, 40.0f);
@@ -262,26 +262,44 @@ TEST(HybridC3rcFrame, ItemRunsCoverEveryItemWithinTheirCaps) {
     const float s = std::bit_cast<float>(it.w);
     return s > 1.0f ? (long long)std::ceil(float(it.z) / s) : (long long)it.z;
   };
-  const std::vector<uint32_t> runs = itemRuns(items, 4096, 64);
-  ASSERT_GE(runs.size(), 2u);
-  EXPECT_EQ(runs.front(), 0u);
-  EXPECT_EQ(runs.back(), items.size());
-  for (size_t r = 0; r + 1 < runs.size(); ++r) {
-    ASSERT_LT(runs[r], runs[r + 1]) << "run " << r << " is empty";
-    EXPECT_LE(runs[r + 1] - runs[r], 64u);
-    long long points = 0;
-    for (uint32_t i = runs[r]; i < runs[r + 1]; ++i) points += taken(items[i]);
-    if (runs[r + 1] - runs[r] > 1) {
-      EXPECT_LE(points, 4096) << "run " << r;
+  for (const long long point_cost : {20LL, 300LL, 3200LL}) {
+    const RunLimits limits{point_cost, 61440, 64, 8};
+    const std::vector<SplatRun> runs = itemRuns(items, limits);
+    ASSERT_FALSE(runs.empty());
+    // Every item's points [0, taken) exactly once, in order.
+    size_t item = 0;
+    long long next = 0;
+    for (size_t r = 0; r < runs.size(); ++r) {
+      const SplatRun& run = runs[r];
+      ASSERT_EQ(size_t(run.x), item) << "run " << r;
+      ASSERT_EQ(run.y, next) << "run " << r;
+      ASSERT_LE(run.x, run.z);
+      EXPECT_LE(size_t(run.z - run.x + 1), limits.max_items);
+      const long long cost = runLoopCost(items, run, point_cost, 8);
+      EXPECT_LE(cost, limits.budget) << "run " << r << " at point cost " << point_cost;
+      ASSERT_LE(run.w, taken(items[size_t(run.z)]));
+      ASSERT_GT(run.z > run.x ? 1 : run.w - run.y, 0) << "run " << r << " is empty";
+      item = size_t(run.z);
+      next = run.w;
+      if (next == taken(items[item])) {
+        ++item;
+        next = 0;
+      }
+      // Greedy: one more step of the next item's points would not have fitted (or the cap).
+      if (r + 1 < runs.size() && size_t(run.z - run.x + 1) < limits.max_items &&
+          next == 0) {
+        SplatRun grown = run;
+        grown.z = int(item);
+        grown.w = int(std::min<long long>(8, taken(items[item])));
+        EXPECT_GT(runLoopCost(items, grown, point_cost, 8), limits.budget) << "run " << r;
+      }
     }
-    // Greedy: the next item did not fit.
-    if (r + 2 < runs.size() && runs[r + 1] - runs[r] < 64) {
-      EXPECT_GT(points + taken(items[runs[r + 1]]), 4096) << "run " << r;
-    }
+    EXPECT_EQ(item, items.size()) << "every point covered";
   }
-  EXPECT_LT(runs.size(), items.size() / 4) << "strided items share runs";
-  EXPECT_EQ(itemRuns({}, 4096, 64), std::vector<uint32_t>{0u});
-  EXPECT_EQ(itemRuns(items, 4096, 1).size(), items.size() + 1) << "one item a run";
+  const RunLimits cheap{20, 61440, 64, 8};
+  EXPECT_LT(itemRuns(items, cheap).size(), items.size() / 4) << "strided items share runs";
+  EXPECT_TRUE(itemRuns({}, cheap).empty());
+  EXPECT_EQ(itemRuns(items, RunLimits{20, 61440, 1, 8}).size(), items.size()) << "one item a run";
 }
 
 }  // namespace

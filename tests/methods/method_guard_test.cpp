@@ -1,5 +1,6 @@
-// A method the driver refuses (GpuError) hands the frame to envmap with a warning: made, updated
-// or drawn, the frame is envmap's own, never black or half drawn; envmap refused too is an error.
+// A method the driver refuses (GpuError: a limit) hands the frame to envmap with a warning: made,
+// updated or drawn, the frame is envmap's own, never black or half drawn; envmap refused too is an
+// error. A shader of ours that does not compile (ShaderError) is no driver limit: an error.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -43,7 +44,7 @@ class RefusedMethod : public Method {
   void render(FrameContext&) override {
     glClearColor(1.0f, 0.0f, 1.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    if (when_ == FailIn::kRender) throwGpu("shader 'refused.frag' does not compile");
+    if (when_ == FailIn::kRender) throwGpu("a storage block of 3 GiB is beyond the test's limit");
   }
 
  private:
@@ -65,6 +66,7 @@ size_t differingPixels(const Image& a, const Image& b) {
 }
 
 TEST_F(MethodGuardTest, RefusedWhenMadeUpdatedOrDrawnTheFrameIsEnvmaps) {
+  expectFallback();
   const Scene scene = makeBuiltinScene("sphere-over-checker");
   FrameRenderer renderer(scene, kSize);
   FrameSettings settings;
@@ -78,11 +80,11 @@ TEST_F(MethodGuardTest, RefusedWhenMadeUpdatedOrDrawnTheFrameIsEnvmaps) {
     const char* reason;
   };
   const Case cases[] = {
-      {"made", [&]() -> std::unique_ptr<Method> { throwGpu("program 'refused' does not link"); },
-       "does not link"},
+      {"made",
+       [&]() -> std::unique_ptr<Method> { throwGpu("a cube map of 99999 texels a side"); },
+       "cube map"},
       {"updated", [] { return std::make_unique<RefusedMethod>(FailIn::kUpdate); }, "99999"},
-      {"drawn", [] { return std::make_unique<RefusedMethod>(FailIn::kRender); },
-       "does not compile"},
+      {"drawn", [] { return std::make_unique<RefusedMethod>(FailIn::kRender); }, "3 GiB"},
   };
   for (const Case& c : cases) {
     MethodGuard guard("refused", c.make, fallback);
@@ -102,7 +104,20 @@ TEST_F(MethodGuardTest, RefusedWhenMadeUpdatedOrDrawnTheFrameIsEnvmaps) {
   EXPECT_EQ(fine.info().name, "refused");
 }
 
+TEST_F(MethodGuardTest, AShaderThatDoesNotCompileIsAnErrorNotAFallback) {
+  const Scene scene = makeBuiltinScene("sphere-over-checker");
+  FrameRenderer renderer(scene, kSize);
+  auto fallback = [&] { return renderer.createMethod("envmap", {}, FrameSettings{}); };
+  EXPECT_THROW(MethodGuard("broken",
+                           []() -> std::unique_ptr<Method> {
+                             throw ShaderError("shader 'broken.frag' does not compile");
+                           },
+                           fallback),
+               ShaderError);
+}
+
 TEST_F(MethodGuardTest, EnvmapRefusedTooIsAnErrorNamingBoth) {
+  expectFallback();
   const Scene scene = makeBuiltinScene("sphere-over-checker");
   FrameRenderer renderer(scene, kSize);
   try {
@@ -118,9 +133,10 @@ TEST_F(MethodGuardTest, EnvmapRefusedTooIsAnErrorNamingBoth) {
   }
 }
 
-// Real refusals of the real driver, through the tool: a map past GL_MAX_TEXTURE_SIZE, and a
-// shader that does not compile (MIRAGE_SHADER_DIR puts a broken copy before the embedded one).
-TEST_F(MethodGuardTest, TheToolWarnsAndRendersWhatEnvmapRenders) {
+// Through the tool: a real refusal of the real driver (a map past GL_MAX_TEXTURE_SIZE) falls
+// back, and says so in the reports; a shader that does not compile (MIRAGE_SHADER_DIR puts a
+// broken copy before the embedded one) is a failure, exit 1, naming the file and the log.
+TEST_F(MethodGuardTest, TheToolFallsBackFromALimitAndFailsOnABrokenShader) {
   const fs::path dir = testTempDir("guard");
   const std::string common = " --scene mirror-room --size 64x48 -o ";
   const CliResult envmap =
@@ -128,33 +144,36 @@ TEST_F(MethodGuardTest, TheToolWarnsAndRendersWhatEnvmapRenders) {
   ASSERT_EQ(envmap.code, 0) << envmap.output;
   const Image expected = readImage((dir / "envmap.png").string());
 
-  const CliResult big =
-      runMirage("render --method zexel --zexel-size 65536" + common + (dir / "zexel.png").string());
+  const CliResult big = runMirage(
+      "render --method zexel --zexel-size 65536" + common + (dir / "zexel.png").string(), "",
+      kFallbackExpected);
   ASSERT_EQ(big.code, 0) << big.output;
   EXPECT_NE(big.output.find("GL_MAX_TEXTURE_SIZE"), std::string::npos) << big.output;
   EXPECT_NE(big.output.find("drawing with 'envmap' instead"), std::string::npos) << big.output;
   EXPECT_EQ(differingPixels(readImage((dir / "zexel.png").string()), expected), 0u);
 
+  // compare says so in its report.
+  const CliResult report = runMirage(
+      "compare --methods zexel,envmap --zexel-size 65536 --scene mirror-room --size 64x48 -o " +
+          (dir / "report").string(),
+      "", kFallbackExpected);
+  ASSERT_EQ(report.code, 0) << report.output;
+  std::ifstream in(dir / "report/metrics.json");
+  const nlohmann::json metrics = nlohmann::json::parse(in);
+  const std::string why = metrics["methods"]["zexel"].value("fallback", "");
+  EXPECT_NE(why.find("GL_MAX_TEXTURE_SIZE"), std::string::npos) << metrics.dump(1);
+  EXPECT_FALSE(metrics["methods"]["envmap"].contains("fallback"));
+
   writeText(dir / "shaders/methods/impostor/capture_diffuse.frag", "this is not GLSL\n");
   const std::string env = "MIRAGE_SHADER_DIR=" + (dir / "shaders").string();
   const CliResult broken =
       runMirage("render --method billboard" + common + (dir / "billboard.png").string(), env);
-  ASSERT_EQ(broken.code, 0) << broken.output;
+  EXPECT_EQ(broken.code, 1) << broken.output;
   EXPECT_NE(broken.output.find("capture_diffuse.frag' does not compile"), std::string::npos)
       << broken.output;
-  EXPECT_EQ(differingPixels(readImage((dir / "billboard.png").string()), expected), 0u);
-
-  // compare says so in its report.
-  const CliResult report =
-      runMirage("compare --methods billboard,envmap --scene mirror-room --size 64x48 -o " +
-                    (dir / "report").string(),
-                env);
-  ASSERT_EQ(report.code, 0) << report.output;
-  std::ifstream in(dir / "report/metrics.json");
-  const nlohmann::json metrics = nlohmann::json::parse(in);
-  const std::string why = metrics["methods"]["billboard"].value("fallback", "");
-  EXPECT_NE(why.find("does not compile"), std::string::npos) << metrics.dump(1);
-  EXPECT_FALSE(metrics["methods"]["envmap"].contains("fallback"));
+  EXPECT_EQ(broken.output.find("drawing with 'envmap' instead"), std::string::npos)
+      << broken.output;
+  EXPECT_FALSE(fs::exists(dir / "billboard.png"));
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "core/error.h"
+#include "methods/method_guard.h"
 
 namespace mirage::test {
 
@@ -28,11 +29,19 @@ bool glRequired() {
 }
 
 void GlTest::SetUp() {
+  fallbacks_at_start_ = methodFallbacks();
   std::string why;
   if (glContext(&why)) return;
   if (glRequired())
     FAIL() << "MIRAGE_REQUIRE_GL is set but there is no OpenGL 4.5 context: " << why;
   GTEST_SKIP() << "no OpenGL 4.5 driver: " << why;
+}
+
+void GlTest::TearDown() {
+  const long long fell = methodFallbacks() - fallbacks_at_start_;
+  if (fell > 0 && !fallback_expected_)
+    ADD_FAILURE() << fell << " method(s) fell back to envmap in this test (the warning above says "
+                  << "why), which it does not expect: a fallback is not a pass";
 }
 
 bool haveDisplay() {

@@ -27,9 +27,17 @@ bool haveDisplay();
     }                                                                                        \
   } while (false)
 
+// A GL test fails where a method fell back to envmap (methods/method_guard.h) unless it said it
+// expects that (expectFallback()): a test whose method fell back has not tested that method.
 class GlTest : public ::testing::Test {
  protected:
   void SetUp() override;
+  void TearDown() override;
+  void expectFallback() { fallback_expected_ = true; }
+
+ private:
+  long long fallbacks_at_start_ = 0;
+  bool fallback_expected_ = false;
 };
 
 }  // namespace mirage::test

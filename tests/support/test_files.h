@@ -38,10 +38,15 @@ struct CliResult {
   std::string output;
 };
 
+// Whether a run of the tool may fall back from a method to envmap (methods/method_guard.h).
+enum class Fallback { kFails, kExpected };
+inline constexpr Fallback kFallbackExpected = Fallback::kExpected;
+
 // Runs the `mirage` executable of this build with `args`. `env` is prefixed (variable
 // assignments); `redirect` decides which streams are captured ("2>&1": both, "2>/dev/null":
-// stdout only, "2>&1 >/dev/null": stderr only).
+// stdout only, "2>&1 >/dev/null": stderr only). Where the output shows that a method fell back
+// to envmap, the test fails unless `fallback` expects it: a fallback is not a pass.
 CliResult runMirage(const std::string& args, const std::string& env = "",
-                    const std::string& redirect = "2>&1");
+                    Fallback fallback = Fallback::kFails, const std::string& redirect = "2>&1");
 
 }  // namespace mirage::test

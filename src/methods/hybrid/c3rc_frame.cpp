@@ -9,6 +9,7 @@
 
 #include "core/check.h"
 #include "core/timer.h"
+#include "gpu/loop_budget.h"
 #include "methods/hybrid/hybrid_shared.h"
 
 namespace mirage {
@@ -112,23 +113,62 @@ void setLodStride(Local& local, size_t first_item, float density, uint32_t pixel
 
 }  // namespace
 
-std::vector<uint32_t> itemRuns(const std::vector<ivec4>& items, long long max_points,
-                               size_t max_items) {
-  std::vector<uint32_t> runs;
-  long long points = 0;
-  size_t count = 0;
-  for (size_t i = 0; i < items.size(); ++i) {
-    const long long taken =
-        shading::hybrid_taken_points(items[i].z, std::bit_cast<float>(items[i].w));
-    if (runs.empty() || points + taken > max_points || count >= max_items) {
-      runs.push_back(uint32_t(i));
-      points = 0;
-      count = 0;
-    }
-    points += taken;
-    ++count;
+namespace {
+
+long long takenPoints(const ivec4& item) {
+  return shading::hybrid_taken_points(item.z, std::bit_cast<float>(item.w));
+}
+
+// One item's share of a run's count: its iteration of the item loop and its point loop, the
+// first lane taking ceil(points / lanes) of them.
+long long itemLoopCost(long long points, long long point_cost, int lanes) {
+  return 1 + gpu::loopCost((points + lanes - 1) / lanes, point_cost);
+}
+
+}  // namespace
+
+long long runLoopCost(const std::vector<ivec4>& items, const SplatRun& run, long long point_cost,
+                      int lanes) {
+  long long cost = 1;  // the item loop's last test
+  for (int i = run.x; i <= run.z; ++i) {
+    const long long begin = i == run.x ? run.y : 0;
+    const long long end = i == run.z ? std::min<long long>(run.w, takenPoints(items[size_t(i)]))
+                                     : takenPoints(items[size_t(i)]);
+    cost += itemLoopCost(end - begin, point_cost, lanes);
   }
-  runs.push_back(uint32_t(items.size()));
+  return cost;
+}
+
+std::vector<SplatRun> itemRuns(const std::vector<ivec4>& items, const RunLimits& limits) {
+  // The most points one item's part of a run may take with `left` of the budget (itemLoopCost).
+  const auto fitting = [&](long long left) {
+    return std::max<long long>((left - 2) / (1 + limits.point_cost), 0) * limits.lanes;
+  };
+  MIRAGE_CHECK_GT(fitting(limits.budget - 1), 0);  // a run takes at least a step of points
+  std::vector<SplatRun> runs;
+  long long cost = 0;  // of the open run
+  size_t count = 0;    // its items
+  bool open = false;
+  for (size_t i = 0; i < items.size(); ++i) {
+    const long long taken = takenPoints(items[i]);
+    long long begin = 0;
+    while (true) {
+      if (!open || count >= limits.max_items || fitting(limits.budget - cost) == 0) {
+        runs.push_back(SplatRun(int(i), int(begin), int(i), int(begin)));
+        cost = 1;  // the item loop's last test
+        count = 0;
+        open = true;
+      }
+      const long long end = std::min(taken, begin + fitting(limits.budget - cost));
+      runs.back().z = int(i);
+      runs.back().w = int(end);
+      cost += itemLoopCost(end - begin, limits.point_cost, limits.lanes);
+      ++count;
+      begin = end;
+      if (begin >= taken) break;
+      open = false;  // the rest of a split item starts the next run
+    }
+  }
   return runs;
 }
 

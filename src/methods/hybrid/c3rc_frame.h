@@ -47,12 +47,30 @@ struct C3rcFrame {
   double ms = 0.0;  // wall time of the whole phase
 };
 
-// The runs of consecutive work items the splatting pass gives one workgroup each: the first item
-// of every run, then items.size(). A run takes items while their points (the strides applied)
-// total at most `max_points` (an item with more is a run of its own), at most `max_items` of
-// them. One C3RC's items are consecutive, so a run loads its C3RC once.
-std::vector<uint32_t> itemRuns(const std::vector<ivec4>& items, long long max_points,
-                               size_t max_items);
+// A run of consecutive work items that one workgroup of the splatting pass projects
+// (hybrid_splat.comp): items x..z, from point y of item x's taken points (the strides applied)
+// to point w of item z's (exclusive; an item's whole count where it ends inside the run).
+using SplatRun = ivec4;
+
+// What a run may cost: each point's worst case in the loop limiter's count (gpu/loop_budget.h;
+// SplatPass::pointCost), the budget, the most items a run takes, the invocations sharing an item's
+// points.
+struct RunLimits {
+  long long point_cost = 0;
+  long long budget = 0;
+  size_t max_items = 1;
+  int lanes = 8;
+};
+
+// The runs covering every item's taken points once, in order, each within `limits`: greedy, an
+// item that does not fit whole split across runs. One C3RC's items are consecutive, so a run
+// loads its C3RC once.
+std::vector<SplatRun> itemRuns(const std::vector<ivec4>& items, const RunLimits& limits);
+
+// The worst case of `run` in the loop limiter's count: its loop over items, each item's loop over
+// its points (lanes points a step), `point_cost` each.
+long long runLoopCost(const std::vector<ivec4>& items, const SplatRun& run, long long point_cost,
+                      int lanes);
 
 // `pixels[r][t]`: visible pixels of triangle t of reflector instance `reflectors[r]`;
 // `matrices`: every instance's current transform; `meshes` (when given): every instance's

@@ -22,6 +22,7 @@
 // C3rcData.info.z flags
 #define MIRAGE_C3RC_MULTIPLE 1  // the sidedness test allows a second projection
 #define MIRAGE_C3RC_HULL 8      // bounding planes kept per C3RC
+#define MIRAGE_C3RC_ROOT_STEPS 40  // the most steps of a bracketed root (c3rc_bracketed_root)
 
 // A C3rcData.info.z flag: the placeholder of a degenerate triangle (never culled nor splatted).
 #define MIRAGE_C3RC_DEGENERATE 2
@@ -113,7 +114,7 @@ SHARED_FN float c3rc_bracketed_root(vec4 p, float lo, float hi) {
   float dlo = c3rc_poly_derivative(p, lo);
   float x = dlo != 0.0f ? lo - flo / dlo : 0.5f * (lo + hi);
   if (!(x > lo && x < hi)) x = 0.5f * (lo + hi);
-  for (int i = 0; i < 40; ++i) {
+  for (int i = 0; i < MIRAGE_C3RC_ROOT_STEPS; ++i) {
     float f = c3rc_poly(p, x);
     float ax = abs(x);
     float rounding = 4.0e-7f * (abs(p.x) + ax * (abs(p.y) + ax * (abs(p.z) + ax * abs(p.w))));

@@ -73,6 +73,7 @@ void main() {
   }
   if (node.range.w == 0u) {
     uint slot = atomicAdd(state[MIRAGE_KD_STATE_ITEMS], 1u);
+    atomicAdd(state[MIRAGE_KD_STATE_POINTS], node.range.y - node.range.x);
     if (slot < uint(u_item_capacity))
       items[slot] = ivec4(int(pair) / u_cloud_count, int(node.range.x),
                           int(node.range.y - node.range.x), MIRAGE_KD_ITEM_W);

@@ -288,25 +288,26 @@ class HybridMethod final : public Method {
   void splat(FrameContext& frame) {
     SplatItems items;
     items.count = itemCount();
-    if (gpu_cull_)
+    if (gpu_cull_) {
       items.gpu = &gpu_cull_->items();
-    else
+      items.gpu_points = store_.largestLeaf();
+    } else
       items.cpu = &last_.items;
     splat_.run(frame, store_, last_.c3rcs, items);
     checkEveryPairProjected();
   }
 
-  // The splatting shader counts the (point, C3RC) pairs it projected; fewer than the items hold
-  // means the driver cut its loops short (llvmpipe stops a shader loop after 65,535 iterations
-  // without a word): an error, not a frame with reflections silently missing. Each item may
-  // round its strided count differently on the GPU, hence the slack of one per item.
+  // The splatting shader counts the (point, C3RC) pairs it projected. Its runs keep every
+  // invocation within the loop budget (gpu/loop_budget.h), so fewer than the items hold is a
+  // bug of ours (a run that overran llvmpipe's loop limiter, which cuts loops without a word):
+  // an error, not a frame with reflections silently missing. A GPU's division may round an
+  // item's strided count (hybrid_taken_points) the other way: a slack of one per item.
   void checkEveryPairProjected() const {
-    if (gpu_cull_) return;
-    const long long projected = splat_.counter(0), expected = last_.lod_points;
-    if (std::llabs(projected - expected) > (long long)last_.items.size())
+    const long long projected = splat_.counter(0);
+    const long long expected = gpu_cull_ ? gpu_last_.points : last_.lod_points;
+    if (std::llabs(projected - expected) > (long long)itemCount())
       throwRuntime(
-          "hybrid: the splatting pass projected {} of the {} (point, C3RC) pairs it was given: "
-          "the GL driver cut its loops short",
+          "hybrid: the splatting pass projected {} of the {} (point, C3RC) pairs it was given",
           projected, expected);
   }
 

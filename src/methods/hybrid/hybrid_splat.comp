@@ -15,7 +15,9 @@ layout(local_size_x = MIRAGE_HYBRID_GROUP) in;
 
 layout(std430, binding = MIRAGE_BIND_HYBRID_C3RCS) readonly buffer C3rcBlock { C3rcData c3rcs[]; };
 layout(std430, binding = MIRAGE_BIND_HYBRID_ITEMS) readonly buffer ItemBlock { ivec4 items[]; };
-layout(std430, binding = MIRAGE_BIND_HYBRID_RUNS) readonly buffer RunBlock { uint runs[]; };
+// A run: its first item, the first of that item's taken points it projects, its last item and
+// the end of that item's taken points it projects (splat_pass.h, SplatRun).
+layout(std430, binding = MIRAGE_BIND_HYBRID_RUNS) readonly buffer RunBlock { ivec4 runs[]; };
 layout(std430, binding = MIRAGE_BIND_HYBRID_POINTS) readonly buffer PointBlock {
   vec4 positions[];
 };
@@ -30,6 +32,11 @@ layout(std430, binding = MIRAGE_BIND_HYBRID_CANDIDATES) writeonly buffer Candida
 layout(binding = MIRAGE_UNIT_HYBRID_DEPTH) uniform sampler2D u_depth;
 
 uniform int u_run_count;
+uniform int u_run_base;      // the run of this dispatch's first workgroup
+// > 0: the items are on the GPU, no runs given: run r is slice r % u_slices of item r / u_slices,
+// u_slice_points of its points each.
+uniform int u_slices;
+uniform int u_slice_points;
 uniform int u_first_only;    // 1: the first projection only
 uniform int u_splat_size;    // s: an s×s square; 0: from the magnification
 uniform int u_pixel_scale;   // frame pixels per output pixel along a side (--ssaa)
@@ -70,23 +77,24 @@ uint splat(C3rcData c, vec4 proj, vec3 q, float spacing, uint index) {
   ivec2 first = ivec2(floor(position - 0.5f * float(side - 1)));
   uint key = hybrid_depth_key(length(q - base));
   uint written = 0u;
-  for (int dy = 0; dy < side; ++dy)
-    for (int dx = 0; dx < side; ++dx) {
-      ivec2 pixel = first + ivec2(dx, dy);
-      if (any(lessThan(pixel, ivec2(0))) || any(greaterThanEqual(pixel, size))) continue;
-      // Behind the visible reflector surface here: hidden by another part of the reflector.
-      if (clip.w > surface_eye_depth(pixel) * (1.0f + u_occlusion)) continue;
-      uint at = uint(pixel.y * size.x + pixel.x);
-      if (hybrid_is_candidate(atomicMin(depths[at], key), key)) {
-        uint slot = atomicAdd(counters[MIRAGE_HYBRID_COUNTER_CANDIDATES], 1u);
-        if (slot < uint(u_candidate_capacity)) {
-          candidates[3u * slot] = at;
-          candidates[3u * slot + 1u] = key;
-          candidates[3u * slot + 2u] = index;
-        }
+  // One loop over the block, not one a row: side^2 + 1 of the loop limiter's count, not
+  // (side + 1)^2 (splat_pass.cpp, splatPointCost).
+  for (int k = 0; k < side * side; ++k) {
+    ivec2 pixel = first + ivec2(k % side, k / side);
+    if (any(lessThan(pixel, ivec2(0))) || any(greaterThanEqual(pixel, size))) continue;
+    // Behind the visible reflector surface here: hidden by another part of the reflector.
+    if (clip.w > surface_eye_depth(pixel) * (1.0f + u_occlusion)) continue;
+    uint at = uint(pixel.y * size.x + pixel.x);
+    if (hybrid_is_candidate(atomicMin(depths[at], key), key)) {
+      uint slot = atomicAdd(counters[MIRAGE_HYBRID_COUNTER_CANDIDATES], 1u);
+      if (slot < uint(u_candidate_capacity)) {
+        candidates[3u * slot] = at;
+        candidates[3u * slot + 1u] = key;
+        candidates[3u * slot + 2u] = index;
       }
-      ++written;
     }
+    ++written;
+  }
   return written;
 }
 
@@ -95,20 +103,20 @@ struct Counts {
   uint projected, projections, written, seen, facing_away;
 };
 
-// This invocation's share of one work item's points (every MIRAGE_HYBRID_GROUP-th of them).
-void project_item(ivec4 it, C3rcData c, inout Counts counts) {
+// This invocation's share (every MIRAGE_HYBRID_GROUP-th) of the points [begin, end) that one
+// work item takes.
+void project_item(ivec4 it, C3rcData c, int begin, int end, inout Counts counts) {
   // The level of detail: every stride-th point (leaves are in Morton order: a stratified
   // subsample), each standing for `stride` points, so its spacing grows by sqrt(stride).
   float stride = max(intBitsToFloat(it.w), 1.0f);
   float grown = sqrt(stride);
-  int taken = hybrid_taken_points(it.z, stride);
   // An item lies in one point cloud: one instance, its matrices and closedness loaded once.
   int instance = int(positions[it.y].w);
   mat4 model = instances[instance].model;
   mat3 linear = mat3(model);
   mat3 normal_matrix = mat3(instances[instance].normal_matrix);
   bool cull_back = u_keep_backfaces == 0 && attributes[it.y].albedo.w > 0.5f;
-  for (int i = int(gl_LocalInvocationID.x); i < taken; i += MIRAGE_HYBRID_GROUP) {
+  for (int i = begin + int(gl_LocalInvocationID.x); i < end; i += MIRAGE_HYBRID_GROUP) {
     uint index = uint(it.y + min(int(float(i) * stride), it.z - 1));
     vec4 position = positions[index], object_normal = attributes[index].normal;
     vec3 q = (model * vec4(position.xyz, 1.0f)).xyz;
@@ -133,19 +141,31 @@ void project_item(ivec4 it, C3rcData c, inout Counts counts) {
 
 void main() {
   Counts counts = Counts(0u, 0u, 0u, 0u, 0u);
-  // A run of consecutive items per workgroup (c3rc_frame.h, itemRuns): one C3RC's items are
-  // consecutive, so its 320 bytes are loaded once per run, not once per item.
-  for (uint run = gl_WorkGroupID.x; run < uint(u_run_count); run += gl_NumWorkGroups.x) {
-    int loaded = -1;
-    C3rcData c;
-    for (uint item = runs[run]; item < runs[run + 1u]; ++item) {
-      ivec4 it = items[item];
-      if (it.x != loaded) {
-        c = c3rcs[it.x];
-        loaded = it.x;
-      }
-      project_item(it, c, counts);
+  // One run per workgroup (the host dispatches u_run_count of them in chunks the dispatch size
+  // allows): a loop over runs here would multiply the invocation's loop count.
+  int run = u_run_base + int(gl_WorkGroupID.x);
+  if (run >= u_run_count) return;
+  ivec4 r;
+  if (u_slices > 0) {
+    int slice = run % u_slices;
+    r = ivec4(run / u_slices, slice * u_slice_points, run / u_slices, (slice + 1) * u_slice_points);
+  } else {
+    r = runs[run];
+  }
+  // A run of consecutive items (c3rc_frame.h, itemRuns): one C3RC's items are consecutive, so
+  // its 320 bytes are loaded once per run, not once per item.
+  int loaded = -1;
+  C3rcData c;
+  for (int item = r.x; item <= r.z; ++item) {
+    ivec4 it = items[item];
+    if (it.x != loaded) {
+      c = c3rcs[it.x];
+      loaded = it.x;
     }
+    int taken = hybrid_taken_points(it.z, max(intBitsToFloat(it.w), 1.0f));
+    int begin = item == r.x ? r.y : 0;
+    int end = item == r.z ? min(r.w, taken) : taken;
+    project_item(it, c, begin, end, counts);
   }
   atomicAdd(counters[0], counts.projected);
   atomicAdd(counters[1], counts.projections);

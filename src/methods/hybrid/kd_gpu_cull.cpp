@@ -134,6 +134,7 @@ KdGpuCullResult KdGpuCull::run(const std::vector<C3rcData>& c3rcs,
   }
   result.gpu_ms = watch.ms();
   result.items = state[MIRAGE_KD_STATE_ITEMS];
+  result.points = state[MIRAGE_KD_STATE_POINTS];
   result.cull.nodes_tested = state[MIRAGE_KD_STATE_TESTED];
   result.cull.hull_rejects = state[MIRAGE_KD_STATE_HULL_REJECTS];
   result.cull.exact_rejects = state[MIRAGE_KD_STATE_EXACT_REJECTS];

@@ -16,6 +16,7 @@ namespace mirage {
 
 struct KdGpuCullResult {
   size_t items = 0;  // work items in KdGpuCull::items()
+  long long points = 0;  // the points they hold
   CullCounters cull;
   int dispatches = 0;         // one per tree level, and one more per buffer that had to grow
   double transform_ms = 0.0;  // moving the C3RCs into the clouds' spaces (CPU, TBB)

@@ -24,6 +24,7 @@
 #define MIRAGE_KD_STATE_EXACT_REJECTS 4
 #define MIRAGE_KD_STATE_FOLD_KEEPS 5
 #define MIRAGE_KD_STATE_CONE_REJECTS 6
+#define MIRAGE_KD_STATE_POINTS 7  // the points of the items written (the splatting checks it projected them)
 #define MIRAGE_KD_STATE_SIZE 8
 
 // The culling modes (Culling in c3rc_cull.h).

@@ -66,6 +66,14 @@ size_t PointStore::leafCount() const {
   return n;
 }
 
+long long PointStore::largestLeaf() const {
+  long long most = 0;
+  for (const PointCloud& c : clouds_)
+    for (const KdNode& node : c.tree.nodes())
+      if (node.leaf()) most = std::max<long long>(most, node.end - node.begin);
+  return most;
+}
+
 double PointStore::averageLeafDepth() const {
   double sum = 0.0;
   size_t leaves = leafCount();

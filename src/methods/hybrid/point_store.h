@@ -36,6 +36,8 @@ class PointStore {
   double averageLeafDepth() const;
   double pointsPerLeaf() const;
   size_t leafCount() const;
+  // The most points a leaf of any tree holds (a work item of the GPU culling is one leaf).
+  long long largestLeaf() const;
 
  private:
   std::vector<PointCloud> clouds_;

@@ -6,6 +6,7 @@
 
 #include "core/timer.h"
 #include "gpu/context.h"
+#include "gpu/loop_budget.h"
 #include "methods/hybrid/c3rc_frame.h"
 
 namespace mirage {
@@ -15,9 +16,9 @@ namespace {
 // The runs of work items one workgroup projects (itemRuns). A software rasteriser runs each
 // workgroup as a task of one SIMD batch with its own set-up, and a run of one C3RC's items loads
 // the C3RC once: runs of up to 64 items took teapot-dragon's splatting from 39 to 35 ms on
-// llvmpipe. At most kMaxItemPoints points a run, as a merged item holds: llvmpipe ends a shader
-// after 65,535 loop iterations. A GPU needs many workgroups to fill its cores: one item a run
-// there.
+// llvmpipe. A GPU needs many workgroups to fill its cores: one item a run there. Either way a
+// run stays within the loop budget (gpu/loop_budget.h): llvmpipe ends a shader's loops after
+// 65,535 iterations in all.
 constexpr size_t kRunItemsSoftware = 64;
 
 }  // namespace
@@ -27,11 +28,37 @@ SplatPass::SplatPass(const SplatSettings& settings)
       program_(gpu::Program::compute("methods/hybrid/hybrid_splat.comp")),
       run_items_(gpu::currentContextIsSoftware() ? kRunItemsSoftware : 1) {}
 
-std::vector<uint32_t> SplatPass::runs(const SplatItems& items) const {
-  if (items.cpu) return itemRuns(*items.cpu, kMaxItemPoints, run_items_);
-  std::vector<uint32_t> runs(items.count + 1);
-  std::iota(runs.begin(), runs.end(), 0u);
-  return runs;
+long long SplatPass::pointCost(const SplatSettings& settings) {
+  const long long side = settings.splat_size > 0
+                             ? settings.splat_size
+                             : (long long)MIRAGE_HYBRID_MAX_SPLAT * settings.pixel_scale;
+  const long long project =
+      gpu::loopCost(MIRAGE_C3RC_HULL) + gpu::loopCost(3, gpu::loopCost(MIRAGE_C3RC_ROOT_STEPS));
+  const long long splats = gpu::loopCost(settings.first_only ? 1 : 3, gpu::loopCost(side * side));
+  return project + splats;
+}
+
+RunLimits SplatPass::runLimits() const {
+  return {pointCost(settings_), gpu::kShaderLoopBudget, run_items_, MIRAGE_HYBRID_GROUP};
+}
+
+long long SplatPass::slicePoints() const {
+  // One item from its first point: the run's item loop (1), the item's iteration and its point
+  // loop's last test (2), then steps of MIRAGE_HYBRID_GROUP points.
+  const long long steps = (gpu::kShaderLoopBudget - 3) / (1 + pointCost(settings_));
+  return steps * MIRAGE_HYBRID_GROUP;
+}
+
+std::vector<SplatRun> SplatPass::runs(const SplatItems& items) const {
+  return itemRuns(*items.cpu, runLimits());
+}
+
+void SplatPass::dispatch(size_t run_count) {
+  // At most 65,535 workgroups a dispatch (GL's minimum limit), one run each.
+  for (size_t base = 0; base < run_count; base += 65535) {
+    program_.set("u_run_base", int(base));
+    glDispatchCompute(GLuint(std::min<size_t>(run_count - base, 65535)), 1, 1);
+  }
 }
 
 void SplatPass::run(FrameContext& frame, PointStore& store, const std::vector<C3rcData>& c3rcs,
@@ -51,10 +78,22 @@ void SplatPass::run(FrameContext& frame, PointStore& store, const std::vector<C3
       .bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_ITEMS);
   counter_buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_COUNTERS);
   frame.target.depth().bind(MIRAGE_UNIT_HYBRID_DEPTH);
-  const std::vector<uint32_t> item_runs = runs(items);
-  run_buffer_.upload(std::span<const uint32_t>(item_runs));
-  run_buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_RUNS);
-  const size_t run_count = item_runs.size() - 1;
+  size_t run_count = 0;
+  if (items.cpu) {
+    const std::vector<SplatRun> item_runs = runs(items);
+    run_buffer_.upload(std::span<const SplatRun>(item_runs));
+    run_buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_RUNS);
+    run_count = item_runs.size();
+    program_.set("u_slices", 0);
+  } else {
+    const long long slice = slicePoints();
+    const long long slices = std::max<long long>((items.gpu_points + slice - 1) / slice, 1);
+    run_count = items.count * size_t(slices);
+    if (run_buffer_.size() == 0) run_buffer_ = gpu::Buffer(sizeof(SplatRun));
+    run_buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_RUNS);
+    program_.set("u_slices", int(slices));
+    program_.set("u_slice_points", int(slice));
+  }
   const mat4& proj = frame.view.projectionMatrix();
   program_.set("u_run_count", int(run_count));
   program_.set("u_first_only", settings_.first_only ? 1 : 0);
@@ -71,7 +110,7 @@ void SplatPass::run(FrameContext& frame, PointStore& store, const std::vector<C3
     program_.set("u_candidate_capacity", int(visibility_.prepare()));
     SplatVisibility::clearWords(counter_buffer_, 0u);
     program_.use();
-    glDispatchCompute(GLuint(std::min<size_t>(run_count, 65535)), 1, 1);
+    dispatch(run_count);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     counter_buffer_.download(counters_, sizeof(counters_));
     candidates = counters_[MIRAGE_HYBRID_COUNTER_CANDIDATES];

@@ -10,6 +10,7 @@
 #include "gpu/buffer.h"
 #include "gpu/program.h"
 #include "methods/hybrid/c3rc.h"
+#include "methods/hybrid/c3rc_frame.h"
 #include "methods/hybrid/hybrid_shared.h"
 #include "methods/hybrid/point_store.h"
 #include "methods/hybrid/splat_visibility.h"
@@ -25,11 +26,12 @@ struct SplatSettings {
 };
 
 // The items to splat: on the CPU (uploaded, and grouped into runs), or already on the GPU
-// (`count` of them, one a run: only their count is known here).
+// (`count` of them, each of at most `gpu_points` points: cut into slices of a run each).
 struct SplatItems {
   const std::vector<ivec4>* cpu = nullptr;
   const gpu::Buffer* gpu = nullptr;
   size_t count = 0;
+  long long gpu_points = 0;
 };
 
 class SplatPass {
@@ -46,8 +48,19 @@ class SplatPass {
   uint32_t counter(int i) const { return counters_[i]; }
   double ms() const { return ms_; }
 
+  // The worst case of one point in the shader's loops, in the loop limiter's count
+  // (gpu/loop_budget.h): the C3RC's hull planes, the cubic's three pieces of up to
+  // MIRAGE_C3RC_ROOT_STEPS steps each, and up to three splats (one with the first projection
+  // only) of the largest side squared pixels.
+  static long long pointCost(const SplatSettings& settings);
+  // What a run may hold on this context (one item a run on a GPU).
+  RunLimits runLimits() const;
+  // The points of one slice of an item on the GPU: the most a run's share of one item may take.
+  long long slicePoints() const;
+
  private:
-  std::vector<uint32_t> runs(const SplatItems& items) const;
+  std::vector<SplatRun> runs(const SplatItems& items) const;
+  void dispatch(size_t run_count);
 
   SplatSettings settings_;
   gpu::Program program_;
