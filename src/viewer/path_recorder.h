@@ -27,13 +27,13 @@ class PathRecorder {
   std::optional<CameraDesc> advance(double seconds);
   bool playing() const { return playing_; }
   void stopPlaying() { playing_ = false; }
-  float playTime() const { return play_time_; }
+  float playTime() const { return float(play_time_); }
   const CameraDesc& path() const { return path_; }
 
  private:
   CameraDesc recorded_, path_;
   double record_time_ = 0.0, last_key_time_ = 0.0;
-  float play_time_ = 0.0f;
+  double play_time_ = 0.0;
   bool recording_ = false, playing_ = false;
 };
 

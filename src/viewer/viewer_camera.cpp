@@ -13,6 +13,7 @@ constexpr float kPitchLimit = 1.55f;  // just short of straight up or down
 void ViewerCamera::reset(const CameraDesc& start) {
   base_ = start;
   base_.path = {};
+  exact_ = base_;
   target_ = start.target;
   const vec3 offset = start.position - start.target;
   distance_ = std::max(glm::length(offset), 1e-4f);
@@ -22,12 +23,16 @@ void ViewerCamera::reset(const CameraDesc& start) {
 }
 
 void ViewerCamera::orbit(vec2 delta) {
+  if (delta == vec2(0.0f)) return;
+  exact_.reset();
   yaw_ -= delta.x * kRadiansPerPixel;
   pitch_ = std::clamp(pitch_ + delta.y * kRadiansPerPixel, -kPitchLimit, kPitchLimit);
 }
 
 void ViewerCamera::pan(vec2 delta, float height) {
+  if (delta == vec2(0.0f)) return;
   const CameraDesc d = desc();
+  exact_.reset();
   const vec3 forward = glm::normalize(d.target - d.position);
   const vec3 right = glm::normalize(glm::cross(forward, vec3(0.0f, 1.0f, 0.0f)));
   const vec3 up = glm::cross(right, forward);
@@ -38,11 +43,15 @@ void ViewerCamera::pan(vec2 delta, float height) {
 }
 
 void ViewerCamera::dolly(float steps) {
+  if (steps == 0.0f) return;
+  exact_.reset();
   distance_ = std::max(distance_ * std::pow(0.9f, steps), 1e-3f);
 }
 
 void ViewerCamera::fly(vec3 direction, float speed, float seconds) {
+  if (direction == vec3(0.0f) || speed * seconds == 0.0f) return;
   const CameraDesc d = desc();
+  exact_.reset();
   const vec3 forward = glm::normalize(d.target - d.position);
   const vec3 right = glm::normalize(glm::cross(forward, vec3(0.0f, 1.0f, 0.0f)));
   target_ += (direction.x * right + direction.y * vec3(0.0f, 1.0f, 0.0f) + direction.z * forward) *
@@ -51,12 +60,14 @@ void ViewerCamera::fly(vec3 direction, float speed, float seconds) {
 
 void ViewerCamera::frame(const Bounds3& bounds) {
   if (bounds.empty()) return;
+  exact_.reset();
   target_ = bounds.center();
   const float radius = std::max(bounds.radius(), 1e-3f);
   distance_ = 1.1f * radius / std::sin(glm::radians(base_.fov_y_degrees) * 0.5f);
 }
 
 CameraDesc ViewerCamera::desc() const {
+  if (exact_) return *exact_;
   CameraDesc d = base_;
   d.target = target_;
   d.position = target_ + distance_ * vec3(std::cos(pitch_) * std::sin(yaw_), std::sin(pitch_),

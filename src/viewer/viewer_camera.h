@@ -4,6 +4,8 @@
 // camera it gives can be written to a camera file and read back.
 #pragma once
 
+#include <optional>
+
 #include "core/bounds.h"
 #include "core/camera.h"
 
@@ -31,6 +33,10 @@ class ViewerCamera {
 
  private:
   CameraDesc base_;
+  // The camera given to reset(), until the user moves it: shown as it is, so that a scene's
+  // camera or a played path's is render's to the bit (the orbit's angles round it, and its up is
+  // the world's).
+  std::optional<CameraDesc> exact_;
   vec3 target_{0.0f};
   float distance_ = 1.0f, yaw_ = 0.0f, pitch_ = 0.0f;  // radians; the eye relative to the target
 };

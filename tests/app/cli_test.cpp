@@ -11,6 +11,7 @@
 
 #include "scene/builtin_scenes.h"
 #include "support/gl_test.h"
+#include "support/image_check.h"
 #include "support/test_files.h"
 
 namespace mirage::test {
@@ -167,7 +168,7 @@ TEST_F(CliWithGl, CompareSplitsTheErrorByReflectorAndCause) {
   EXPECT_EQ(ref["converged_spp"], 64);
   ASSERT_TRUE(ref["noise_floor_psnr"].is_number()) << ref;
   ASSERT_TRUE(ref["noise_floor_psnr_reflector"].is_number()) << ref;
-  EXPECT_GT(ref["noise_floor_psnr"].get<double>(), 25.0);
+  EXPECT_TRUE(meetsFloor(ref["noise_floor_psnr"].get<double>(), floors::kReferenceNoiseFloor));
   EXPECT_NE(j["timing"].get<std::string>().find("separate run at 96x64"), std::string::npos);
   EXPECT_TRUE(std::filesystem::exists(dir / "causes.png"));
   for (const char* name : {"envmap", "billboard"}) {

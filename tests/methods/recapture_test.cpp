@@ -68,9 +68,9 @@ TEST_F(Recapture, ExactPolicyAlongAPlayedPathIsAFreshCaptureAtEveryTime) {
     SCOPED_TRACE(method);
     const RenderedFrame a = played(renderer, method, kExact, 6);
     const RenderedFrame b = fresh(renderer, method, 0.5f);
-    // Only the mip chains of the few layers a frame re-captures are built by blits rather than
-    // by glGenerateTextureMipmap: their last bits may differ.
-    EXPECT_TRUE(psnrAtLeast(a.color, b.color, 50.0, &b.ids, method + "-exact"));
+    // The mip chains of the few layers a frame re-captures are built by blits rather than by
+    // glGenerateTextureMipmap: both are 2:1 box filters, to the bit.
+    EXPECT_TRUE(imagesEqual(a.color, b.color, 0.0f, &b.ids, method + "-exact"));
   }
 }
 
@@ -118,7 +118,7 @@ TEST_F(Recapture, AStoppedSceneCatchesUpOnWhatTheBudgetLeft) {
   const RenderedFrame exact = fresh(renderer, "billboard", 0.4f);
   // What is left is within the tolerances (1 degree, 2 texels).
   EXPECT_GT(reflectorPsnr(caught_up, exact), reflectorPsnr(behind, exact) + 3.0);
-  EXPECT_TRUE(psnrAtLeast(caught_up.color, exact.color, 35.0, &exact.ids, "caught-up"));
+  EXPECT_TRUE(psnrAtLeast(caught_up.color, exact.color, floors::kRecaptureCaughtUp, &exact.ids));
 }
 
 // zexel's planar mirror maps: in mirror-room (the teapot turns, the box slides, the light swings
@@ -145,10 +145,10 @@ TEST_F(Recapture, ZexelMirrorMapsFollowThePolicy) {
   EXPECT_EQ(captures(*exact, 0.5f), 1.0);
   const RenderedFrame exact_frame = renderer.read();
   EXPECT_EQ(captures(*amortised, 0.5f), 1.0);
-  EXPECT_TRUE(psnrAtLeast(renderer.read().color, exact_frame.color, 50.0, &exact_frame.ids,
-                          "zexel-mirror-amortised"));
+  EXPECT_TRUE(
+      imagesEqual(renderer.read().color, exact_frame.color, 0.0f, &exact_frame.ids, "amortised"));
   const RenderedFrame b = fresh(renderer, "zexel", 0.5f);
-  EXPECT_TRUE(psnrAtLeast(exact_frame.color, b.color, 50.0, &b.ids, "zexel-mirror-exact"));
+  EXPECT_TRUE(imagesEqual(exact_frame.color, b.color, 0.0f, &b.ids, "zexel-exact"));
 }
 
 }  // namespace

@@ -142,10 +142,9 @@ TEST_F(ZexelImages, MirrorRoomShowsParallaxBetterThanEnvironmentMaps) {
       renderWithTruth(scene, "envmap", {320, 240}, settings, {}, 0.0f, kMatchedSsaa);
   std::printf("mirror-room reflector PSNR: zexel %.2f dB, envmap %.2f dB\n", reflectorPsnr(zexel),
               reflectorPsnr(envmap));
-  // Measured under matched 2x2 sampling: 24.3 dB against 14.6 (20.7 before the per-tile levels
-  // and the blend).
+  // Measured under matched 2x2 sampling: 24.3 dB against 14.6. The floor of zexel's own figure
+  // is ZexelBar.MirrorReadsAtLeast24DbUnderMatchedSampling's (kZexelMirrorRoomMatched).
   EXPECT_GT(reflectorPsnr(zexel), reflectorPsnr(envmap) + 4.0);
-  EXPECT_TRUE(meetsFloor(reflectorPsnr(zexel), floors::kZexelMirrorRoomParallax));
 }
 
 TEST(ZexelCli, BadParametersExitWithTheAllowedRange) {

@@ -98,7 +98,8 @@ TEST_F(DynamicScene, RipplingMirrorMatchesTheRayTracerAtEveryTime) {
   const RenderPair later = renderWithTruth(scene, "envmap-infinite", size, settings, {}, 0.9f);
   for (const RenderPair* p : {&at0, &later}) {
     EXPECT_GT(countNonZero(p->cpu_ids), 20000u);
-    EXPECT_TRUE(psnrAtLeast(p->gpu, p->cpu, floors::kRipplingMirror, &p->cpu_ids));
+    // The same rays through the same deformed triangles: equal but for float rounding.
+    EXPECT_TRUE(imagesEqual(p->gpu, p->cpu, kFloatRounding, &p->cpu_ids, "rippling-mirror"));
   }
   // The waves moved: the two times differ far more (10 dB) than the GPU and the ray tracer do.
   const double moved = psnrFromMse(meanSquaredError(at0.cpu, later.cpu, &at0.cpu_ids));

@@ -1,5 +1,6 @@
 #include "support/image_check.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -19,15 +20,6 @@ std::string writeArtifacts(const Image& actual, const Image& expected, const std
   writePng((dir / (tag + ".expected.png")).string(), expected);
   writePng((dir / (tag + ".diff.png")).string(), heatmap(absoluteError(actual, expected), 0.25f));
   return dir.string();
-}
-
-::testing::AssertionResult psnrAtLeast(const Image& actual, const Image& expected, double min_psnr,
-                                       const IdImage* mask, const std::string& tag) {
-  double psnr = psnrFromMse(meanSquaredError(actual, expected, mask));
-  if (psnr >= min_psnr) return ::testing::AssertionSuccess() << "PSNR " << psnr << " dB";
-  return ::testing::AssertionFailure()
-         << tag << ": PSNR " << psnr << " dB < " << min_psnr << " dB; images in "
-         << writeArtifacts(actual, expected, tag);
 }
 
 namespace {
@@ -62,6 +54,34 @@ void logFloor(double psnr, const PsnrFloor& floor) {
   if (!result)
     result << "; images in " << writeArtifacts(actual, expected, tag.empty() ? floor.name : tag);
   return result;
+}
+
+::testing::AssertionResult imagesEqual(const Image& actual, const Image& expected,
+                                       float max_difference, const IdImage* mask,
+                                       const std::string& tag) {
+  if (actual.width() != expected.width() || actual.height() != expected.height())
+    return ::testing::AssertionFailure() << tag << ": sizes " << actual.width() << "x"
+                                         << actual.height() << " and " << expected.width() << "x"
+                                         << expected.height();
+  size_t off = 0, worst_at = 0;
+  float worst = 0.0f;
+  for (size_t i = 0; i < actual.pixelCount(); ++i) {
+    if (mask && mask->data()[i] == 0) continue;
+    const vec3 d = glm::abs(vec3(actual.data()[i]) - vec3(expected.data()[i]));
+    const float m = std::max({d.x, d.y, d.z});
+    if (!(m <= max_difference)) ++off;
+    if (!(m <= worst)) {
+      worst = m;
+      worst_at = i;
+    }
+  }
+  if (off == 0)
+    return ::testing::AssertionSuccess() << "largest difference " << worst;
+  return ::testing::AssertionFailure()
+         << tag << ": " << off << " pixels differ by more than " << max_difference
+         << ", the most " << worst << " at (" << worst_at % size_t(actual.width()) << ", "
+         << worst_at / size_t(actual.width()) << "); images in "
+         << writeArtifacts(actual, expected, tag);
 }
 
 ::testing::AssertionResult mostPixelsWithin(const Image& actual, const Image& expected,

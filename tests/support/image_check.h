@@ -17,10 +17,6 @@ namespace mirage::test {
 // directory.
 std::string writeArtifacts(const Image& actual, const Image& expected, const std::string& tag);
 
-// Passes when PSNR (over the mask's pixels, or all pixels) is at least `min_psnr` dB.
-::testing::AssertionResult psnrAtLeast(const Image& actual, const Image& expected, double min_psnr,
-                                       const IdImage* mask, const std::string& tag);
-
 // Passes when the PSNR meets the floor (support/psnr_floors.h), and with MIRAGE_PSNR_LOG set
 // appends the measurement to that file. `tag` (default: the floor's name) names the images
 // written on failure.
@@ -29,6 +25,15 @@ std::string writeArtifacts(const Image& actual, const Image& expected, const std
                                        const std::string& tag = "");
 // The same for a PSNR measured by the caller (no images to write).
 ::testing::AssertionResult meetsFloor(double psnr, const PsnrFloor& floor);
+
+// Passes when no (masked) pixel's colour channel differs by more than `max_difference`: 0 for
+// frames that must be the same to the bit; a float-rounding tolerance (kFloatRounding: 1e-4 of display values,
+// a fortieth of an 8-bit step) for two renderers of one exact thing. On failure says the largest
+// difference, where, and how many pixels are off, and writes the images.
+::testing::AssertionResult imagesEqual(const Image& actual, const Image& expected,
+                                       float max_difference, const IdImage* mask,
+                                       const std::string& tag);
+inline constexpr float kFloatRounding = 1.0e-4f;
 
 // Passes when at most `max_fraction` of the (masked) pixels differ by more than `tolerance` in
 // any channel.

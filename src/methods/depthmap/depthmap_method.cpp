@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <span>
 
+#include <fmt/format.h>
+
 #include "gpu/memory.h"
 #include "methods/depthmap/depthmap_capture.h"
+#include "methods/depthmap/depthmap_loop_cost.h"
 #include "methods/depthmap/depthmap_shared.h"
 #include "methods/impostor/billboard_stage.h"
 #include "methods/impostor/candidate_cells.h"
@@ -93,7 +96,13 @@ class DepthMapMethod final : public Method {
         last_bounce_reflective_(lastBounceReflective(setup.params)),
         shader_("methods/depthmap/depthmap.frag", shaderDefines(specs_, setup.params, stage_),
                 impostorPass(setup.params)),
-        base_program_(baseColourProgram()) {}
+        base_program_(baseColourProgram()),
+        search_(depthMapSearch(setup.params)),
+        tries_(setup.params.integer("depthmap-tries")),
+        self_maps_(std::any_of(specs_.begin(), specs_.end(),
+                               [](const DepthMapSpec& s) { return s.reflector; })
+                       ? options_.self_maps
+                       : 0) {}
 
   void update(FrameContext& frame) override {
     stage_.update(frame);
@@ -128,7 +137,14 @@ class DepthMapMethod final : public Method {
 
   void render(FrameContext& frame) override {
     passes_ = {};
-    if (!stage_.beginFrame(frame, shader_, base_program_, last_bounce_reflective_)) return;
+    const ImpostorHookCost hooks{
+        depthMapHookLoopCost(longest_list_, options_.maps, tries_, self_maps_,
+                             mapSearchLoopCost(search_, srdm_.points, options_.size)),
+        fmt::format(", lists of up to {} depth-mapped objects, --depthmap-maps {}, "
+                    "--depthmap-tries {}, --self-maps {}, --srdm-m {}, --depthmap-size {}",
+                    longest_list_, options_.maps, tries_, self_maps_, srdm_.points,
+                    options_.size)};
+    if (!stage_.beginFrame(frame, shader_, base_program_, last_bounce_reflective_, hooks)) return;
     maps_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_DEPTHMAPS);
     lists_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_DEPTHMAP_LISTS);
     capture_.colors().bind(MIRAGE_UNIT_DEPTHMAP_COLOR);
@@ -176,9 +192,11 @@ class DepthMapMethod final : public Method {
                                       stage_.set().cells, spheres, owner);
     const int head = 2 * int(lists.ranges.size());
     std::vector<int> words;
+    longest_list_ = 0;
     for (const ivec2& range : lists.ranges) {
       words.push_back(head + range.x);
       words.push_back(range.y);
+      longest_list_ = std::max(longest_list_, range.y);
     }
     for (int candidate : lists.entries) words.push_back(first_map[size_t(candidate)]);
     if (words.empty()) words.push_back(0);
@@ -219,6 +237,10 @@ class DepthMapMethod final : public Method {
   int last_captures_ = 0;
   bool updated_ = false;
   uint64_t updated_version_ = 0;
+  // What the trace's loops depend on (depthMapHookLoopCost): the search compiled in, the tries,
+  // the self maps a reflector has (0 without), the longest list of objects.
+  int search_ = MIRAGE_DEPTHMAP_SEARCH_SRDM, tries_ = 1, self_maps_ = 0;
+  int longest_list_ = 0;
 };
 
 }  // namespace

@@ -1,10 +1,15 @@
 #include "methods/depthmap/srdm_gpu_builder.h"
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "core/error.h"
+#include "gpu/loop_budget.h"
 #include "methods/depthmap/srdm_build_shared.h"
 #include "methods/depthmap/srdm_shared.h"
 
@@ -40,6 +45,18 @@ const gpu::Program& SrdmGpuBuilder::rowProgram(int points) {
   return program;
 }
 
+long long SrdmGpuBuilder::rowLoopCost(int samples, int m) {
+  using gpu::loopCost;
+  const long long n = samples, k = m / 2, h = std::bit_width(unsigned(std::max(m, 1)));
+  const long long scan = loopCost(n + 1, loopCost(k) + loopCost(k - 1));  // offer_span's two
+  const long long knots = loopCost(k);
+  const long long worst_of = loopCost(n), heap = loopCost(h);
+  const long long queue = loopCost(k, worst_of + heap);
+  const long long refine = loopCost(std::max(m - 2, 0), 2 * worst_of + 2 * heap);
+  const long long emit = loopCost(k, loopCost(m)) + loopCost(m + 1LL);
+  return scan + knots + queue + refine + emit;
+}
+
 gpu::Texture SrdmGpuBuilder::createOutput(int size, const SrdmSettings& settings) {
   return gpu::Texture::create2DArray(GL_RGBA32F, (settings.points + 1) / 2, size, settings.domains);
 }
@@ -65,12 +82,17 @@ void SrdmGpuBuilder::build(const gpu::Texture& depth, float near, float far,
   // The domains' directions and sample spacings, computed here for both builders (see shared).
   if (domain_count_ != n || domain_size_ != w) {
     std::vector<vec4> geometry(static_cast<size_t>(n));
+    int most_samples = 0;
     for (int i = 0; i < n; ++i) {
       const float theta = sh::srdm_theta(i, n);
       const float extent = sh::srdm_extent(theta, float(w));
-      const float spacing = extent / float(sh::srdm_sample_count(extent));
+      const int samples = sh::srdm_sample_count(extent);
+      const float spacing = extent / float(samples);
       geometry[size_t(i)] = vec4(std::cos(theta), std::sin(theta), extent, spacing);
+      most_samples = std::max(most_samples, samples);
     }
+    gpu::checkLoopBudget(fmt::format("the SRDM GPU builder (--depthmap-size {}, --srdm-m {})", w, m),
+                         rowLoopCost(most_samples, m));
     domains_ = gpu::Buffer::fromSpan(std::span<const vec4>(geometry));
     domain_count_ = n;
     domain_size_ = w;

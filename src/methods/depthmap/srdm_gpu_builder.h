@@ -22,6 +22,11 @@ class SrdmGpuBuilder {
 
   // The output array for a w x w depth map: RGBA32F, (m + 1) / 2 x w texels, n layers.
   static gpu::Texture createOutput(int size, const SrdmSettings& settings);
+  // The worst case of srdm_build.comp's row pass in the loop limiter's count
+  // (gpu/loop_budget.h), for rows of up to `samples` samples and m points: the scan offering
+  // each span, the knots, the queue's heap (worst_of's scan and a heap walk of log2 m) and the
+  // refinement to m points, and the row's writes. A build beyond the loop budget is a GpuError.
+  static long long rowLoopCost(int samples, int m);
 
   // Queues the build of `depth` (R32F or DEPTH_COMPONENT32F 2D, w x w, GL window depth of a
   // camera with planes near < far, >= 1 background) into `out` (createOutput's shape). Does not

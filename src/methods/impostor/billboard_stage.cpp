@@ -4,6 +4,8 @@
 #include <array>
 #include <span>
 
+#include <fmt/format.h>
+
 #include "gpu/memory.h"
 #include "methods/probe_params.h"
 #include "methods/recapture_params.h"
@@ -157,15 +159,26 @@ void BillboardStage::bind(const gpu::Program& program, const GpuScene& gpu) cons
   }
 }
 
+int BillboardStage::longestList() const {
+  int longest = 0;
+  for (const shading::BillboardRange& r : set_.ranges)
+    longest = std::max({longest, r.range.y + r.range.w, r.back.y + r.back.w});
+  return longest;
+}
+
 bool BillboardStage::beginFrame(FrameContext& frame, const ImpostorShader& shader,
-                                const gpu::Program& base_program,
-                                bool last_bounce_reflective) const {
+                                const gpu::Program& base_program, bool last_bounce_reflective,
+                                const ImpostorHookCost& hooks) const {
   frame.drawDirect();
   frame.beginPart(gpu::Part::kReflect);
   if (frame.settings.order == 0 || empty()) {
     frame.drawOwnReflectors(base_program);
     return false;
   }
+  gpu::checkLoopBudget(fmt::format("the impostor trace (--order {}, lists of up to {} "
+                                   "billboards{})",
+                                   frame.settings.order, longestList(), hooks.settings),
+                       impostorTraceLoopCost(frame.settings.order, longestList(), hooks.cost));
   for (const gpu::Program* program : shader.programs()) {
     bind(*program, frame.gpu);
     program->set("u_last_bounce_reflective", last_bounce_reflective ? 1 : 0);

@@ -12,6 +12,7 @@
 
 #include "gpu/buffer.h"
 #include "gpu/counter_slots.h"
+#include "gpu/loop_budget.h"
 #include "gpu/program.h"
 #include "gpu/texture.h"
 #include "methods/impostor/billboard_capture.h"
@@ -38,8 +39,22 @@ std::vector<ParamSpec> billboardStageParams();
 BillboardStageOptions billboardStageOptions(const ParamValues& params);
 // The caps of --impostor-groups auto: the driver's texture layers, --impostor-memory.
 GroupCaps impostorGroupCaps(const BillboardStageOptions& options);
+
+// The worst case of impostor_trace.glsl's loops in one invocation (gpu/loop_budget.h): `order`
+// bounces, each testing a list of `list` entries (nearest_billboard) and running the method's
+// hooks at `hooks` a bounce.
+constexpr long long impostorTraceLoopCost(int order, long long list, long long hooks) {
+  return gpu::loopCost(order, gpu::loopCost(list) + hooks);
+}
 // --last-bounce all: the last bounce tests reflective billboards too (a hit shows its base colour).
 bool lastBounceReflective(const ParamValues& params);
+
+// What an impostor method's hooks cost a bounce of the trace, in the loop limiter's count, and
+// the settings behind it (said when it is beyond the budget).
+struct ImpostorHookCost {
+  long long cost = 0;
+  std::string settings;
+};
 
 class BillboardStage {
  public:
@@ -55,9 +70,16 @@ class BillboardStage {
   // An impostor method's frame up to its reflections: the direct part; then, when there is
   // something to trace (order >= 1 and reflectors), binds the stage and the last-bounce rule
   // for `shader`'s programs and returns true; otherwise draws the reflectors with
-  // `base_program` (their base colour) and returns false.
+  // `base_program` (their base colour) and returns false. `hooks`: what the method's hooks
+  // cost a bounce in the loop limiter's count (impostorTraceLoopCost) and the settings that
+  // make it, for the message; the trace's worst case beyond the loop budget is a GpuError
+  // (gpu/loop_budget.h).
   bool beginFrame(FrameContext& frame, const ImpostorShader& shader,
-                  const gpu::Program& base_program, bool last_bounce_reflective) const;
+                  const gpu::Program& base_program, bool last_bounce_reflective,
+                  const ImpostorHookCost& hooks = ImpostorHookCost{}) const;
+  // The most entries a ray's list holds, diffuse and reflective, over every list and side: what
+  // a bounce of the trace loops over.
+  int longestList() const;
   bool empty() const { return set_.ranges.empty(); }
   // The defines impostor_trace.glsl needs for these options (IMPOSTOR_MORPH: the morph's box).
   std::vector<std::string> shaderDefines() const;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/check.h"
+#include "gpu/loop_budget.h"
 #include "shading/cubemap.h"
 
 // The shared search and the bounds' build read the map through these accessors; the map is the
@@ -129,6 +130,12 @@ ZexelInverseSettings zexelInverseSettings(int face_size, float step_texels, bool
   s.step_angle = step_texels * s.texel_angle;
   s.max_steps = int(std::ceil(glm::pi<float>() / s.step_angle)) + 1;
   return s;
+}
+
+long long zexelInverseLoopCost(const ZexelInverseSettings& settings) {
+  const long long iterations =
+      (settings.max_steps + 1LL) * (ZEXEL_INVERSE_BISECTIONS + 2LL);
+  return gpu::loopCost(settings.top_level + 1) + gpu::loopCost(iterations);
 }
 
 ZexelInverseHit zexelInverseWarp(const ZexelCubeMap& map, const vec3& origin, const vec3& dir,

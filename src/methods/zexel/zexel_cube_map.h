@@ -54,6 +54,10 @@ struct ZexelInverseSettings {
 // With `bounds`, the search crosses empty stretches with the bounds up to
 // zexel_bound_top_level(face_size) (the map's bounds must be built).
 ZexelInverseSettings zexelInverseSettings(int face_size, float step_texels, bool bounds = true);
+// The worst case of zexel_inverse_warp's loops in one invocation (gpu/loop_budget.h): the march
+// start's walk up the bound levels, then the one loop of (max_steps + 1) x (bisections + 2)
+// iterations, marching, skipping or bisecting.
+long long zexelInverseLoopCost(const ZexelInverseSettings& settings);
 
 // What a search found: ZEXEL_INVERSE_* of zexel_inverse_shared.h (static_assert'ed equal).
 inline constexpr int kZexelInverseSky = 0, kZexelInverseHit = 1, kZexelInverseExposed = 2;

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 
+#include <fmt/format.h>
+
+#include "gpu/loop_budget.h"
 #include "methods/recapture_params.h"
 #include "methods/zexel/zexel_shared.h"
 #include "render/base_colour.h"
@@ -50,6 +53,11 @@ ZexelCurvedReflectors::ZexelCurvedReflectors(const MethodSetup& setup)
   const std::vector<int> planar = planarReflectors(scene);
   for (int i : scene.reflectorInstances())
     if (std::find(planar.begin(), planar.end(), i) == planar.end()) curved_.push_back(i);
+  if (!curved_.empty())
+    gpu::checkLoopBudget(fmt::format("zexel's curved search (--zexel-cube-size {}, "
+                                     "--zexel-curved-step {})",
+                                     size_, setup.params.real("zexel-curved-step")),
+                         zexelInverseLoopCost(search_));
   program_.set("u_step_angle", search_.step_angle);
   program_.set("u_max_steps", search_.max_steps);
   program_.set("u_max_slope", search_.max_slope);
