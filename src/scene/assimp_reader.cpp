@@ -178,12 +178,8 @@ class AssimpConverter {
         return fromTexels(*t, encoding);
       });
     }
-    std::replace(name.begin(), name.end(), '\\', '/');
-    std::string file =
-        std::filesystem::path(name).is_absolute() ? name : loader::folderOf(path_) + name;
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(file, ec))
-      throwInput("{}: material {} texture {}: no such file {}", path_, mat, name, file);
+    const std::string file = loader::textureFile(loader::folderOf(path_), name);
+    if (file.empty()) return textures_.missing(fmt::format("{}: material {}", path_, mat), name);
     return textures_.get(file, encoding, [&] { return readImage(file, encoding); });
   }
 

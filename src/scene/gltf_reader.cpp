@@ -374,10 +374,13 @@ class GltfConverter {
     std::string key = img.uri.empty() || img.uri.starts_with("data:")
                           ? fmt::format("{}#image{}", path_, source)
                           : loader::folderOf(path_) + img.uri;
+    // An external image whose file does not exist: tinygltf warned and left it empty.
+    if (img.image.empty() && !img.uri.empty() && !img.uri.starts_with("data:") &&
+        !std::filesystem::is_regular_file(key))
+      return textures_.missing(fmt::format("{}: image {}", path_, source), key);
     return textures_.get(key, encoding, [&] {
       if (img.image.empty())
-        throwInput("{}: image {} ('{}') could not be read (a missing file?)", path_, source,
-                   img.uri);
+        throwInput("{}: image {} ('{}') could not be read", path_, source, img.uri);
       return readImageFromMemory(key, img.image.data(), img.image.size(), encoding);
     });
   }

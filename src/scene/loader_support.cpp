@@ -92,6 +92,26 @@ int TextureList::get(const std::string& key, Encoding encoding,
   return it->second;
 }
 
+std::string textureFile(const std::string& folder, std::string name) {
+  std::replace(name.begin(), name.end(), '\\', '/');
+  const std::filesystem::path given(name);
+  std::error_code ec;
+  const std::string as_given = given.is_absolute() ? name : folder + name;
+  if (std::filesystem::is_regular_file(as_given, ec)) return as_given;
+  const std::string alone = folder + given.filename().string();
+  if (given.has_filename() && std::filesystem::is_regular_file(alone, ec)) {
+    spdlog::warn("texture {} not found where named; using {}", name, alone);
+    return alone;
+  }
+  return {};
+}
+
+int TextureList::missing(const std::string& where, const std::string& file) {
+  if (missing_.insert(file).second)
+    spdlog::warn("{}: texture file {} does not exist; drawn without that texture", where, file);
+  return -1;
+}
+
 LoadedModel singleMeshModel(Mesh mesh) {
   LoadedModel model;
   model.meshes.push_back(std::move(mesh));

@@ -35,6 +35,12 @@ void checkLimits(const std::string& file, const std::string& what, uint64_t vert
 // much again for the readers' staging of the file's own arrays. Saturates instead of wrapping.
 uint64_t meshBytes(uint64_t vertices, uint64_t triangles);
 
+// The file of a texture that a model in `folder` names: the name as given (absolute, or relative
+// to the folder; Windows' backslashes read as slashes), else its file name alone in the folder, as
+// Blender and three.js look for a file written on another machine ("D:/projects/..."). Empty
+// where neither exists.
+std::string textureFile(const std::string& folder, std::string name);
+
 // The model's textures, each decoded once per (key, encoding).
 class TextureList {
  public:
@@ -42,10 +48,15 @@ class TextureList {
   // The index of the texture known as `key` with this encoding; `decode` is called only the first
   // time and returns the image.
   int get(const std::string& key, Encoding encoding, const std::function<Image()>& decode);
+  // A texture whose file does not exist, as Blender, assimp's viewer and three.js take it: one
+  // warning per file (`where`: the model or material file and the material), and the material
+  // without that texture (-1).
+  int missing(const std::string& where, const std::string& file);
 
  private:
   std::vector<TextureImage>& textures_;
   std::map<std::pair<std::string, Encoding>, int> index_;
+  std::set<std::string> missing_;
 };
 
 // A model holding one mesh without a material, placed by the identity transform.

@@ -152,13 +152,10 @@ class ObjMaterials {
  private:
   int texture(const std::string& mtl, const std::string& material, const char* key,
               std::string name, Encoding encoding) {
-    std::replace(name.begin(), name.end(), '\\', '/');  // paths written on Windows
-    std::string path =
-        std::filesystem::path(name).is_absolute() ? name : loader::folderOf(mtl) + name;
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-      throwInput("{}: material {} {} {}: no such file {} (the materials of {})", mtl, material, key,
-                 name, path, obj_);
+    const std::string path = loader::textureFile(loader::folderOf(mtl), name);
+    if (path.empty())
+      return textures_.missing(
+          fmt::format("{}: material {} {} (the materials of {})", mtl, material, key, obj_), name);
     return textures_.get(path, encoding, [&] {
       try {
         return readImage(path, encoding);

@@ -4,6 +4,7 @@
 
 #include "core/image.h"
 #include "scene/model_loader.h"
+#include "scene/log_capture.h"
 #include "scene/model_loader_files.h"
 
 namespace mirage {
@@ -198,12 +199,32 @@ TEST(ObjReader, MissingMtlFileLeavesDefaultMaterials) {
   EXPECT_EQ(m.mesh_material, (std::vector<int>{-1}));
 }
 
-TEST(ObjErrors, MissingTextureNamesBothFiles) {
-  std::string mtl = "newmtl wood\nKd 1 1 1\nmap_Kd wood.jpg\n";
-  std::string obj = "mtllib looks.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl wood\nf 1 2 3\n";
+// A texture whose file does not exist is left out with one warning per file, as Blender, assimp's
+// viewer and three.js do (assimp's FBX/spider.fbx names D:/projects/...): the material stays,
+// without it. A file named by a path of another machine is looked for by its name alone in the
+// material file's folder. Both readers alike: tinyobjloader's and assimp's.
+TEST(ObjReader, AMissingTextureIsLeftOutWithAWarningAndAForeignPathFoundByName) {
+  const std::string mtl =
+      "newmtl wood\nKd 1 1 1\nmap_Kd wood.jpg\nnewmtl oak\nKd 1 1 1\nmap_Kd wood.jpg\n"
+      "newmtl moved\nKd 1 1 1\nmap_Kd D:\\projects\\spider\\maps\\albedo.png\n";
+  const std::string obj =
+      "mtllib looks.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl wood\nf 1 2 3\nusemtl oak\n"
+      "f 1 2 3\nusemtl moved\nf 1 2 3\n";
   ObjFiles f(obj, mtl);
-  expectInputError([&] { loadObj(f.obj); },
-                   {f.dir.file("models/looks.mtl"), "wood.jpg", f.obj, "map_Kd", "no such file"});
+  writePng(f.dir.file("models/albedo.png"), Image(2, 2, vec4(0.5f, 0.5f, 0.5f, 1.0f)));
+  for (const bool assimp : {false, true}) {
+    SCOPED_TRACE(assimp ? "assimp" : "tinyobjloader");
+    test::LogCapture log;
+    const LoadedModel m = assimp ? loadWithAssimp(f.obj) : loadObj(f.obj);
+    ASSERT_EQ(m.materials.size(), 3u);
+    for (const Material& material : m.materials) {
+      if (material.name == "moved")
+        EXPECT_GE(material.albedo_texture, 0) << "found by its name beside the materials";
+      else
+        EXPECT_EQ(material.albedo_texture, -1) << material.name;
+    }
+    EXPECT_EQ(log.count({"warning", "wood.jpg", "does not exist"}), 1u) << "once per file";
+  }
 }
 
 TEST(ObjErrors, UnreadableTextureNamesBothFiles) {
