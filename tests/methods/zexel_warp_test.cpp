@@ -5,8 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <cmath>
 #include <cstring>
 #include <limits>
+#include <random>
+#include <vector>
 
 #include <tbb/task_arena.h>
 
@@ -216,11 +219,73 @@ TEST(ZexelBlend, FrontSurfaceSplatsBlendByWeightAndFartherOnesStayOut) {
   put(grazed, {5, 3}, {0.5f, 0.5f}, 1.5f, blue);
   EXPECT_LT(shading::zexel_weight(centre, vec2(5.5f, 3.5f), falloff), shading::ZEXEL_WEIGHT_STRONG);
   EXPECT_EQ(gatherZexels(grazed, o, pixel), blended);
+  // At tolerance 0 the nearest splat covering the pixel takes it, weak or not (the paper's).
+  o.tolerance = 0.0f;
+  EXPECT_EQ(gatherZexels(grazed, o, pixel), vec4(blue, 1.5f));
+  o.tolerance = 0.02f;
   // Landed near the pixel's centre, a nearer surface takes the pixel alone.
   put(cells, {4, 4}, {0.5f, 0.6f}, 1.5f, blue);
   EXPECT_EQ(gatherZexels(cells, o, pixel), vec4(blue, 1.5f));
   // Pixels no splat covers are exposures: the cells two pixels away do not reach.
   EXPECT_LT(gatherZexels(cells, o, {8, 0}).w, 0.0f);
+}
+
+// How far behind the final front a splat of the blend may be: joins chain through the front,
+// which only moves nearer, so a splat met first stays in while each later one is within the
+// tolerance of the one before. Four strong splats met in the pass's order, each 2 % nearer than
+// the last: the first, 6.1 % behind the final front (more than twice the tolerance), is in the
+// blend; on random splats no member lies more than (1 + tolerance)^(n - 1) behind, n the splats
+// covering the pixel.
+TEST(ZexelBlend, JoinsChainUpToTheToleranceToThePowerOfTheSplatsLess1) {
+  ZexelSplatOptions o;
+  o.rect = ivec4(0, 0, 9, 9);
+  o.tolerance = 0.02f;
+  const int margin = zexelCellMargin(o);
+  const ivec2 pixel(4, 4);
+  const float sigma = 0.8f;
+  auto empty = [&] { return ZexelCells(zexelCellCount(o), uvec4(kNoZexel, 0u, 0u, 0u)); };
+  auto put = [&](ZexelCells& cells, ivec2 at, vec2 landed, float distance, vec3 color) {
+    cells[size_t(shading::zexel_cell_index(at, o.rect, margin))] =
+        shading::zexel_cell(std::bit_cast<uint32_t>(distance), landed, 3, color, sigma);
+  };
+  const vec3 red(1.0f, 0.0f, 0.0f), green(0.0f, 1.0f, 0.0f);
+  ZexelCells chain = empty();
+  // Row by row: (3, 3), (4, 3), (5, 3), then (3, 4); each landed at its corner nearest the centre.
+  put(chain, {3, 3}, {3.99f, 3.99f}, 2.0f * std::pow(1.02f, 3.0f), red);
+  put(chain, {4, 3}, {4.5f, 3.99f}, 2.0f * std::pow(1.02f, 2.0f), green);
+  put(chain, {5, 3}, {5.01f, 3.99f}, 2.0f * 1.02f, green);
+  put(chain, {3, 4}, {3.99f, 4.5f}, 2.0f, green);
+  const vec4 shown = gatherZexels(chain, o, pixel);
+  EXPECT_EQ(shown.w, 2.0f);
+  EXPECT_GT(shown.x, 0.05f) << "the first splat, 6.1 % behind, is in the blend";
+
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  int probed = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    ZexelCells cells = empty();
+    std::vector<std::pair<ivec2, float>> splats;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx)
+        if (unit(rng) < 0.7f) splats.push_back({pixel + ivec2(dx, dy), 2.0f + 0.25f * unit(rng)});
+    if (splats.empty()) continue;
+    const int probe = int(unit(rng) * float(splats.size())) % int(splats.size());
+    std::vector<vec2> landings;
+    for (size_t k = 0; k < splats.size(); ++k) {
+      const vec2 landed = vec2(splats[k].first) + vec2(unit(rng), unit(rng)) * 0.999f;
+      landings.push_back(landed);
+      put(cells, splats[k].first, landed, splats[k].second, int(k) == probe ? red : green);
+    }
+    int covering = 0;
+    for (const vec2& landed : landings) covering += shading::zexel_covers(landed, 3, pixel) ? 1 : 0;
+    const vec4 g = gatherZexels(cells, o, pixel);
+    if (g.w < 0.0f || g.x <= 0.0f) continue;  // the probe is not in the blend
+    ++probed;
+    EXPECT_LE(splats[size_t(probe)].second,
+              g.w * std::pow(1.0f + o.tolerance, float(covering - 1)) * (1.0f + 1e-6f))
+        << "trial " << trial;
+  }
+  EXPECT_GT(probed, 500);
 }
 
 // The hierarchy's level per tile, on a wall facing the reference camera: its zexels at the
