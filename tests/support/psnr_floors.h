@@ -45,6 +45,7 @@ inline constexpr PsnrFloor kHybridSkyOnly{"hybrid-sky-only", 35.0, 35.61};
 inline constexpr PsnrFloor kSsrFallbackIsEnvmapBox{"ssr-fallback-is-envmap-box", 74.0, 76.97};
 // One method's captures kept by a policy against the same captures made afresh.
 inline constexpr PsnrFloor kRecaptureCaughtUp{"recapture-caught-up", 35.0, 37.90};
+inline constexpr PsnrFloor kRecaptureCarriedSpin{"recapture-carried-spin", 41.5, 44.44};
 // The matched reference against the converged one (compare's noise floor), 96x64 under 2x2.
 inline constexpr PsnrFloor kReferenceNoiseFloor{"reference-noise-floor", 25.0, 25.96};
 
@@ -76,6 +77,7 @@ inline constexpr const PsnrFloor* kAll[] = {
     &kHybridSkyOnly,
     &kSsrFallbackIsEnvmapBox,
     &kRecaptureCaughtUp,
+    &kRecaptureCarriedSpin,
     &kReferenceNoiseFloor,
     &kEnvmapSphereOverChecker,
     &kBillboardFloor,

@@ -18,9 +18,10 @@ TEST(PsnrFloors, EachFloorIsAtMostItsMeasurementAndNamedOnce) {
   for (const PsnrFloor* f : floors::kAll) {
     EXPECT_LE(f->floor, f->measured) << f->name;
     EXPECT_GT(f->floor, 0.0) << f->name;
-    if (!f->reason)
+    if (!f->reason) {
       EXPECT_LE(f->measured - f->floor, kFloorMargin)
           << f->name << ": more than " << kFloorMargin << " dB below its measurement, no reason";
+    }
     EXPECT_TRUE(names.insert(f->name).second) << f->name << " twice";
   }
   EXPECT_EQ(names.size(), std::size(floors::kAll));

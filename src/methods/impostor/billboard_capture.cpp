@@ -19,13 +19,6 @@ vec3 inObjectSpace(const mat4& m, const vec3& direction) {
   return length > 0.0f ? d / length : vec3(0.0f);
 }
 
-bool isIdentity(const mat3& m) {
-  float off = 0.0f;
-  for (int c = 0; c < 3; ++c)
-    for (int r = 0; r < 3; ++r) off = std::max(off, std::abs(m[c][r] - (c == r ? 1.0f : 0.0f)));
-  return off <= 1e-6f;
-}
-
 }  // namespace
 
 BillboardCapture::BillboardCapture(int size)
@@ -60,8 +53,9 @@ BillboardCapture::Captured BillboardCapture::capturedNow(const GpuScene& gpu,
 
 // The drift of a billboard shown from capture `c` against a capture made now: the turn of the
 // direction its object is seen from (and of the light, for a diffuse one, in the object's
-// frame), and the change of its quad's size in texels. A reflective billboard holds world-space
-// normals, so any turn or scaling of its reflector is beyond every tolerance.
+// frame), and the change of its quad's size in texels. A reflective billboard's world-space
+// surface points and normals are carried with its reflector's motion (BillboardCarry), so its
+// reflector's turn is measured as a diffuse billboard's object's is.
 Drift BillboardCapture::drift(const GpuScene& gpu, const BillboardSpec& b,
                               const Captured& c) const {
   Drift d;
@@ -72,7 +66,6 @@ Drift BillboardCapture::drift(const GpuScene& gpu, const BillboardSpec& b,
   d.unmeasured =
       now.shape != c.shape || now.light_color != c.light_color || now.ambient != c.ambient;
   const mat3 carry = mat3(now.object) * glm::inverse(mat3(c.object));
-  if (b.kind == BillboardSpec::Kind::kReflective && !isIdentity(carry)) d.unmeasured = true;
   const float carried = glm::length(carry * c.edge_u);
   const float texel = carried / float(size_);
   d.texels = texel > 0.0f ? std::abs(glm::length(b.edge_u) - carried) / texel : 0.0f;
@@ -97,26 +90,38 @@ void BillboardCapture::allocate(const BillboardSet& set) {
 }
 
 int BillboardCapture::update(GpuScene& gpu, ScenePasses& passes, BillboardSet& set,
-                             const FrameSettings& settings, const RecapturePolicy& policy) {
+                             const FrameSettings& settings, const RecapturePolicy& policy,
+                             const std::vector<Drift>& others, std::vector<bool>* others_due) {
   allocate(set);
-  std::vector<Drift> drift(set.billboards.size());
-  for (size_t i = 0; i < set.billboards.size(); ++i) {
+  const size_t n = set.billboards.size();
+  std::vector<Drift> drift(n);
+  for (size_t i = 0; i < n; ++i) {
     if (!captured_[i].valid)
       drift[i].invalid = true;
     else
       drift[i] = this->drift(gpu, set.billboards[i], captured_[i]);
   }
-  const std::vector<int> due = chooseRecaptures(drift, policy);
-  std::vector<bool> fresh(set.billboards.size(), false);
+  drift.insert(drift.end(), others.begin(), others.end());
+  std::vector<int> due = chooseRecaptures(drift, policy);
+  if (others_due) others_due->assign(others.size(), false);
+  const size_t captures = due.size();
+  std::erase_if(due, [&](int i) {
+    if (size_t(i) < n) return false;
+    if (others_due) (*others_due)[size_t(i) - n] = true;
+    return true;
+  });
+  drift.resize(n);
+  std::vector<bool> fresh(n, false);
   for (int i : due) {
     capture(gpu, passes, set.billboards[size_t(i)], settings);
     captured_[size_t(i)] = capturedNow(gpu, set.billboards[size_t(i)]);
     fresh[size_t(i)] = true;
   }
   // The others show their old captures, carried by their objects' motion since.
+  drift.insert(drift.end(), others.begin(), others.end());
   pending_ =
       int(chooseRecaptures(drift, RecapturePolicy{policy.angle_degrees, policy.texels, 0}).size()) -
-      int(due.size());
+      int(captures);
   largest_drift_ = 0.0f;
   for (size_t i = 0; i < set.billboards.size(); ++i) {
     if (fresh[i]) continue;
@@ -126,7 +131,7 @@ int BillboardCapture::update(GpuScene& gpu, ScenePasses& passes, BillboardSet& s
     b.corner = transformPoint(carry, c.corner);
     b.edge_u = mat3(carry) * c.edge_u;
     b.edge_v = mat3(carry) * c.edge_v;
-    b.offset = vec3(carry[3]);
+    b.carry = carry;
     largest_drift_ = std::max(largest_drift_, glm::degrees(drift[i].angle));
   }
   // The captured layers' mip chains: all at once when most are new.

@@ -26,10 +26,13 @@ class BillboardCapture {
   explicit BillboardCapture(int size);
 
   // Re-captures what drifted beyond `policy` (everything, the first time) and moves every
-  // billboard of `set` not captured now to where its old capture stands (its quad and surface
-  // offset carried by its object's motion). Returns the number of billboards captured.
+  // billboard of `set` not captured now to where its old capture stands (its quad, surface
+  // points and normals carried by its object's motion). `others`: the drifts of captures the
+  // caller keeps under the same policy and budget (the stage's environment); `others_due`
+  // receives whether each is to be captured now. Returns the number of billboards captured.
   int update(GpuScene& gpu, ScenePasses& passes, BillboardSet& set, const FrameSettings& settings,
-             const RecapturePolicy& policy);
+             const RecapturePolicy& policy, const std::vector<Drift>& others = {},
+             std::vector<bool>* others_due = nullptr);
 
   // Colour (diffuse) or normal (reflective) with coverage: RGBA16F, mip-mapped.
   const gpu::Texture& surfaces() const { return surfaces_; }

@@ -336,10 +336,21 @@ std::vector<shading::BillboardData> BillboardSet::gpuData(const Scene& scene) co
               reflective ? b.represents : -1,
               reflective ? scene.instances[size_t(b.object)].material : -1));
     d.corner.w = float(b.position_layer);
-    d.offset = vec4(b.offset, 0.0f);
     data.push_back(d);
   }
   return data;
+}
+
+std::vector<shading::BillboardCarry> BillboardSet::carryData() const {
+  std::vector<shading::BillboardCarry> out;
+  out.reserve(billboards.size());
+  for (const BillboardSpec& b : billboards) {
+    const mat4 rows = glm::transpose(b.carry);  // rows[i]: row i of the affine map
+    const mat3 normal = glm::transpose(normalMatrix(b.carry));
+    out.push_back({rows[0], rows[1], rows[2], vec4(normal[0], 0.0f), vec4(normal[1], 0.0f),
+                   vec4(normal[2], 0.0f)});
+  }
+  return out;
 }
 
 }  // namespace mirage

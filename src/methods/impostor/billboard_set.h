@@ -31,9 +31,10 @@ struct BillboardSpec {
   int represents = -1;       // reflective: the reflector (0-based) it stands for
   CameraDesc camera;         // captures its texture: square image, up = edge_v, right = edge_u
   vec3 corner{0.0f}, edge_u{0.0f}, edge_v{0.0f};
-  // Reflective: added to the captured surface points (BillboardCapture carries an old capture
-  // along with its reflector's motion).
-  vec3 offset{0.0f};
+  // The motion its object made since its capture (BillboardCapture carries an old capture along
+  // with it): the quad is carried by it, and a reflective billboard's stored surface points and
+  // normals in the shader (BillboardCarry). The identity for a fresh capture.
+  mat4 carry{1.0f};
   int layer = -1;           // in the surface array: colour (diffuse) or normal (reflective)
   int position_layer = -1;  // reflective: in the surface-point array
 };
@@ -77,6 +78,8 @@ struct BillboardSet {
   std::vector<int> environmentInstances() const;
 
   std::vector<shading::BillboardData> gpuData(const Scene& scene) const;
+  // Each billboard's carry (BillboardSpec::carry) as the shader reads it.
+  std::vector<shading::BillboardCarry> carryData() const;
 };
 
 // The diffuse instances a billboard set stands for at `time` (reflectors and `excluded` left

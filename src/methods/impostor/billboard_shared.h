@@ -16,6 +16,7 @@
 #define MIRAGE_BIND_BILLBOARD_RANGES 6   // SSBO BillboardRange[] (one per reflector)
 #define MIRAGE_BIND_BILLBOARD_ENTRIES 7  // SSBO int[]: billboard indices the ranges point into
 #define MIRAGE_BIND_IMPOSTOR_COUNTS 8    // SSBO uint[]: the frame's counts, in slots (below)
+#define MIRAGE_BIND_BILLBOARD_CARRY 10   // SSBO BillboardCarry[] (one per billboard)
 // The impostor trace's counts of the frame (atomics, one of each a pixel, in the slots of
 // gpu/counter_slots_shared.h):
 #define MIRAGE_IMPOSTOR_CANDIDATES 0  // impostors tested (billboards; depth-mapped objects)
@@ -43,9 +44,25 @@ struct BillboardData {
   vec4 plane;   // xyz: unit normal n = edge_u x edge_v / |...|; w: dot(n, corner)
   ivec4 info;   // x: MIRAGE_BILLBOARD_*; y: surface layer; z: the reflector a reflective
                 // billboard stands for (0-based, -1 for diffuse); w: its material (-1)
-  vec4 offset;  // xyz: added to a reflective billboard's stored surface points (its reflector
-                // moved since the capture, the quad carried with it); w: unused
 };
+
+// How a billboard kept from an earlier capture is carried by its object's motion since (the quad
+// itself is carried on the CPU): a reflective billboard's stored surface points by the motion
+// (the rows of its affine 3 x 4 matrix) and its stored normals by the motion's normal matrix
+// (rows; the inverse transpose of its linear part). The identity for a fresh capture.
+struct BillboardCarry {
+  vec4 point_x, point_y, point_z;
+  vec4 normal_x, normal_y, normal_z;
+};
+
+SHARED_FN vec3 billboard_carry_point(BillboardCarry c, vec3 p) {
+  vec4 h = vec4(p, 1.0f);
+  return vec3(dot(c.point_x, h), dot(c.point_y, h), dot(c.point_z, h));
+}
+
+SHARED_FN vec3 billboard_carry_normal(BillboardCarry c, vec3 n) {
+  return vec3(dot(vec3(c.normal_x), n), dot(vec3(c.normal_y), n), dot(vec3(c.normal_z), n));
+}
 
 // Per reflector (0-based) and direction cell, which list entries its rays test: x, y: first entry
 // and count of diffuse billboards; z, w: first entry and count of reflective billboards (never its
@@ -127,7 +144,6 @@ SHARED_FN BillboardData make_billboard(vec3 corner, vec3 edge_u, vec3 edge_v, iv
   b.edge_v = vec4(edge_v, 1.0f / dot(edge_v, edge_v));
   b.plane = vec4(n, dot(n, corner));
   b.info = info;
-  b.offset = vec4(0.0f);
   return b;
 }
 
@@ -145,7 +161,8 @@ SHARED_FN vec2 billboard_uv_differential(BillboardData b, vec3 dir, float t, vec
 SHARED_END
 
 #ifndef MIRAGE_GLSL
-static_assert(sizeof(mirage::shading::BillboardData) == 6 * 16, "BillboardData layout");
+static_assert(sizeof(mirage::shading::BillboardData) == 5 * 16, "BillboardData layout");
+static_assert(sizeof(mirage::shading::BillboardCarry) == 6 * 16, "BillboardCarry layout");
 static_assert(sizeof(mirage::shading::BillboardRange) == 3 * 16, "BillboardRange layout");
 #endif
 

@@ -134,16 +134,27 @@ void BillboardStage::update(FrameContext& frame) {
   std::vector<int> entries = set_.entries;
   if (entries.empty()) entries.push_back(0);
   entries_.upload(std::span<const int>(entries));
-  last_captures_ = capture_.update(gpu, frame.passes, set_, frame.settings, options_.recapture);
+  // The environment of what has no billboard is a capture kept under the billboards' policy and
+  // budget too.
+  const std::vector<int> env_instances = set_.environmentInstances();
+  std::vector<Drift> env_drift;
+  if (!env_instances.empty()) env_drift.push_back(environmentDrift(gpu, env_instances));
+  std::vector<bool> env_due;
+  last_captures_ = capture_.update(gpu, frame.passes, set_, frame.settings, options_.recapture,
+                                   env_drift, &env_due);
+  env_state_.nextFrame();
+  if (!env_due.empty() && env_due[0]) captureEnvironment(frame, env_instances);
   std::vector<shading::BillboardData> data = set_.gpuData(scene);
   billboards_.upload(std::span<const shading::BillboardData>(data));
-  updateEnvironment(frame);
+  std::vector<shading::BillboardCarry> carry = set_.carryData();
+  carries_.upload(std::span<const shading::BillboardCarry>(carry));
   updated_ = true;
   updated_version_ = gpu.version();
 }
 
 void BillboardStage::bind(const gpu::Program& program, const GpuScene& gpu) const {
   billboards_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_BILLBOARDS);
+  carries_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_BILLBOARD_CARRY);
   ranges_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_BILLBOARD_RANGES);
   entries_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_BILLBOARD_ENTRIES);
   capture_.surfaces().bind(MIRAGE_UNIT_BILLBOARD_SURFACE);
@@ -221,20 +232,29 @@ std::map<std::string, double> BillboardStage::stats() const {
 
 // Diffuse objects without impostors (and the ground, when it morphs into the environment) are
 // reflected through a cube map captured at the reflectors' centroid E, with the distant
-// environment; re-captured when the scene changes. Like the billboards' surfaces it always has
-// its full mip chain, so that the mip setting (which only picks the lookup's level in the
-// shader) takes effect in the frame it changes, whatever it was at the capture.
-void BillboardStage::updateEnvironment(FrameContext& frame) {
-  const std::vector<int> instances = set_.environmentInstances();
-  if (instances.empty()) return;
+// environment: a probe, whose drift (what it shows moved, turned or changed since its capture:
+// render/recapture.h) the billboards' policy weighs with theirs. Like the billboards' surfaces
+// it always has its full mip chain, so that the mip setting (which only picks the lookup's level
+// in the shader) takes effect in the frame it changes, whatever it was at the capture.
+Drift BillboardStage::environmentDrift(const GpuScene& gpu, const std::vector<int>& instances) {
+  const int levels = gpu::Texture::fullMipLevels(options_.envmap_size);
+  if (environment_.levels() != levels) {
+    environment_ = gpu::Texture::createCube(GL_RGBA16F, options_.envmap_size, levels);
+    env_state_.reset(1);
+  }
+  if (env_state_.size() == 0 || !env_state_.state(0).valid) {
+    Drift invalid;
+    invalid.invalid = true;
+    return invalid;
+  }
+  return env_state_.drift(gpu, 0, set_.environment_centre, instances, options_.envmap_size);
+}
+
+void BillboardStage::captureEnvironment(FrameContext& frame, const std::vector<int>& instances) {
   GpuScene& gpu = frame.gpu;
-  if (env_valid_ && env_version_ == gpu.version()) return;
   const Scene& scene = gpu.scene();
   const vec3 centre = set_.environment_centre;
   const int size = options_.envmap_size;
-  const int levels = gpu::Texture::fullMipLevels(size);
-  if (environment_.levels() != levels)
-    environment_ = gpu::Texture::createCube(GL_RGBA16F, size, levels);
   if (!cube_) cube_ = std::make_unique<CubeCapture>(size);
   const float radius = std::max(scene.bounds(gpu.time()).radius(), 1e-3f);
   cube_->capture(environment_, 0, centre, 1e-3f * radius, 100.0f * radius, [&](const View& v) {
@@ -243,8 +263,7 @@ void BillboardStage::updateEnvironment(FrameContext& frame) {
     frame.passes.drawDiffuseInstances(instances);
   });
   environment_.generateMipmaps();
-  env_valid_ = true;
-  env_version_ = gpu.version();
+  env_state_.captured(gpu, 0, centre, instances);
   ++env_captures_;
 }
 

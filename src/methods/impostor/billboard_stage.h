@@ -21,6 +21,7 @@
 #include "methods/impostor/impostor_shader.h"
 #include "methods/method.h"
 #include "render/cube_capture.h"
+#include "render/recapture.h"
 #include "render/reflector_gbuffer.h"
 
 namespace mirage {
@@ -90,19 +91,19 @@ class BillboardStage {
   std::map<std::string, double> stats() const;
 
  private:
-  void updateEnvironment(FrameContext& frame);
+  Drift environmentDrift(const GpuScene& gpu, const std::vector<int>& instances);
+  void captureEnvironment(FrameContext& frame, const std::vector<int>& instances);
 
   BillboardStageOptions options_;
   Grouping grouping_;
   BillboardCapture capture_;
   BillboardSet set_;
-  gpu::Buffer billboards_, ranges_, entries_;
+  gpu::Buffer billboards_, carries_, ranges_, entries_;
   // The trace's counts (impostor_counts.glsl), zeroed at each frame's start.
   mutable gpu::CounterSlots counts_{MIRAGE_IMPOSTOR_COUNTS};
   gpu::Texture environment_;
   std::unique_ptr<CubeCapture> cube_;
-  bool env_valid_ = false;
-  uint64_t env_version_ = 0;
+  ProbeRecapture env_state_;  // what the environment showed when captured
   long env_captures_ = 0;
   int last_captures_ = 0;
   bool updated_ = false;

@@ -26,6 +26,9 @@
 layout(std430, binding = MIRAGE_BIND_BILLBOARDS) readonly buffer BillboardBlock {
   BillboardData billboards[];
 };
+layout(std430, binding = MIRAGE_BIND_BILLBOARD_CARRY) readonly buffer CarryBlock {
+  BillboardCarry billboard_carries[];
+};
 layout(std430, binding = MIRAGE_BIND_BILLBOARD_RANGES) readonly buffer RangeBlock {
   BillboardRange billboard_ranges[];
 };
@@ -63,11 +66,11 @@ float billboard_coverage(BillboardData b, vec2 uv) {
 // The capture writes (point, 1) where the reflector covers a texel and leaves (0, 0, 0, 0)
 // elsewhere, so a bilinear lookup at a silhouette returns (sum of w_i p_i, sum of w_i) over the
 // covered texels: dividing by the filtered coverage averages their points. Undivided, the
-// uncovered texels' zeros would pull the point towards the world origin. The offset carries the
-// points along when the reflector moved since its capture.
-vec3 billboard_surface_point(BillboardData b, vec2 uv) {
+// uncovered texels' zeros would pull the point towards the world origin. The carry moves the
+// points along with the reflector's motion since its capture, rotation included.
+vec3 billboard_surface_point(int index, BillboardData b, vec2 uv) {
   vec4 p = textureLod(u_billboard_position, vec3(uv, b.corner.w), 0.0f);
-  return p.xyz / max(p.w, 1.0e-6f) + b.offset.xyz;
+  return billboard_carry_point(billboard_carries[index], p.xyz / max(p.w, 1.0e-6f));
 }
 
 // Once the hit distance of the ray leaving a reflective billboard is known, that reflector's
@@ -170,7 +173,7 @@ float bounce_distance(BounceHit h, vec3 origin, out vec3 surface_point) {
   BillboardData hit_board = billboards[max(h.hit, 0)];
   bool reflective_hit =
       !h.box && !h.extra && h.hit >= 0 && hit_board.info.x == MIRAGE_BILLBOARD_REFLECTIVE;
-  surface_point = billboard_surface_point(hit_board, h.uv);
+  surface_point = billboard_surface_point(max(h.hit, 0), hit_board, h.uv);
   return h.box ? h.t_box
                : (reflective_hit ? length(surface_point - origin)
                                  : (h.hit >= 0 || h.extra ? h.t : MISS_DISTANCE));
@@ -249,7 +252,8 @@ vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflecto
       material = b.info.w;
       leaves = b.info.z;
       if (bounce < order) {
-        n = normalize(textureLod(u_billboard_surface, vec3(h.uv, float(b.info.y)), 0.0f).xyz);
+        vec3 stored = textureLod(u_billboard_surface, vec3(h.uv, float(b.info.y)), 0.0f).xyz;
+        n = normalize(billboard_carry_normal(billboard_carries[h.hit], stored));
         p = surface_point;
       }
     }
