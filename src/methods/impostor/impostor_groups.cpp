@@ -25,18 +25,29 @@ Bounds3 unionBounds(const Scene& scene, const std::vector<int>& members) {
 
 // How large a cluster looks from the nearest reflector: its bounding radius over its distance
 // (a cluster without reflectors is ranked by its radius alone).
-float apparentSize(const Bounds3& b, const std::vector<vec3>& reflectors) {
+float apparentSize(const Bounds3& b, const std::vector<BoundingSphere>& reflectors) {
   const float radius = b.radius();
   if (reflectors.empty()) return radius;
   float nearest = INFINITY;
-  for (const vec3& r : reflectors) nearest = std::min(nearest, glm::length(r - b.center()));
+  for (const BoundingSphere& r : reflectors)
+    nearest = std::min(nearest, glm::length(r.centre - b.center()));
   return radius / std::max(nearest, radius);
+}
+
+// Whether a cluster's bounding sphere meets a reflector's: its one billboard, through its
+// centre, would stand beside the reflector, and the members next to it would vanish from the
+// rays that leave the reflector along the billboard's plane or away from it.
+bool meetsAReflector(const Bounds3& b, const std::vector<BoundingSphere>& reflectors) {
+  for (const BoundingSphere& r : reflectors)
+    if (glm::length(r.centre - b.center()) <= b.radius() + r.radius) return true;
+  return false;
 }
 
 struct Cluster {
   std::vector<int> members;
   Bounds3 bounds;
-  float size = 0.0f;
+  float size = 0.0f;  // the split order: meeting a reflector first (2), then the apparent size
+  bool straddles = false;
 };
 
 // Splits a cluster of two or more at the median of its members' centres along their longest
@@ -105,9 +116,12 @@ std::vector<ImpostorGroup> singletonGroups(const Scene& scene, const std::vector
 }
 
 std::vector<ImpostorGroup> clusterObjects(const Scene& scene, const std::vector<int>& objects,
-                                          int target) {
-  std::vector<vec3> reflectors;
-  for (int r : scene.reflectorInstances()) reflectors.push_back(scene.instanceBounds(r).center());
+                                          int target, int most) {
+  std::vector<BoundingSphere> reflectors;
+  for (int r : scene.reflectorInstances()) {
+    const Bounds3 b = scene.instanceBounds(r);
+    reflectors.push_back({b.center(), b.radius()});
+  }
   std::vector<Cluster> done;
   std::vector<int> still;
   for (int i : objects)
@@ -118,9 +132,11 @@ std::vector<ImpostorGroup> clusterObjects(const Scene& scene, const std::vector<
   if (still.empty()) return toGroups(std::move(done));
   std::sort(still.begin(), still.end());
   auto make = [&](std::vector<int> members) {
-    Cluster c{std::move(members), {}, 0.0f};
+    Cluster c{std::move(members), {}, 0.0f, false};
     c.bounds = unionBounds(scene, c.members);
-    c.size = c.members.size() > 1 ? apparentSize(c.bounds, reflectors) : -1.0f;
+    c.straddles = c.members.size() > 1 && meetsAReflector(c.bounds, reflectors);
+    c.size = c.members.size() < 2 ? -1.0f
+                                  : (c.straddles ? 2.0f : apparentSize(c.bounds, reflectors));
     return c;
   };
   // Largest apparent size first; among equals the lowest first member (determinism).
@@ -129,7 +145,12 @@ std::vector<ImpostorGroup> clusterObjects(const Scene& scene, const std::vector<
   };
   std::priority_queue<Cluster, std::vector<Cluster>, decltype(smaller)> queue(smaller);
   queue.push(make(still));
-  while (int(done.size() + queue.size()) < target && queue.top().members.size() > 1) {
+  // To the count asked, then on while a group meets a reflector, up to `most`.
+  const auto more = [&] {
+    const int count = int(done.size() + queue.size());
+    return count < target || (count < most && queue.top().straddles);
+  };
+  while (more() && queue.top().members.size() > 1) {
     Cluster c = queue.top();
     queue.pop();
     auto [lo, hi] = split(scene, c.members);
@@ -177,16 +198,21 @@ Grouping chooseGroups(const Scene& scene, const std::vector<int>& objects,
         cost.layers(1) > caps.max_layers
             ? shrink_hint
             : fmt::format("--impostor-memory {} (MiB)", (cost.bytes(1) >> 20) + 1));
+  // A group that meets a reflector is split beyond the count, as far as the storage allows (the
+  // driver's layers and the memory cap; not the groups-per-reflector cap, a cost).
+  GroupCaps storage = caps;
+  storage.max_groups = kMaxGroupCount;
+  const int most = std::max(groupsThatFit(cost, storage), 1);
   switch (setting.mode) {
     case GroupSetting::Mode::kPerObject:
       g.groups = singletonGroups(scene, objects);
       break;
     case GroupSetting::Mode::kCount:
-      g.groups = clusterObjects(scene, objects, setting.count);
+      g.groups = clusterObjects(scene, objects, setting.count, std::max(most, setting.count));
       break;
     case GroupSetting::Mode::kAuto:
       g.groups = int(objects.size()) <= g.fit ? singletonGroups(scene, objects)
-                                              : clusterObjects(scene, objects, g.fit);
+                                              : clusterObjects(scene, objects, g.fit, most);
       break;
   }
   const int count = int(g.groups.size());

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/bounds.h"
+#include "methods/impostor/candidate_cells.h"
 #include "scene/scene.h"
 
 namespace mirage {
@@ -40,11 +41,13 @@ struct ImpostorGroup {
   Bounds3 bounds;            // the members' world bounds at time 0
 };
 
-// Splits `objects` (instances) into at most `target` groups (at least one), as the comment at
-// the top says; fewer only when the objects are fewer, and more when more objects move than
-// `target` allows (moving objects are never merged). Groups are ordered by their first member.
+// Splits `objects` (instances) into `target` groups (at least one), as the comment at the top
+// says; fewer only when the objects are fewer, and more when more objects move than `target`
+// allows (moving objects are never merged) or where a group of two or more would meet a
+// reflector's bounding sphere: such a group is split first and further, up to `most` groups in
+// all, until none meets one. Groups are ordered by their first member.
 std::vector<ImpostorGroup> clusterObjects(const Scene& scene, const std::vector<int>& objects,
-                                          int target);
+                                          int target, int most = kMaxGroupCount);
 // Each object a group of its own.
 std::vector<ImpostorGroup> singletonGroups(const Scene& scene, const std::vector<int>& objects);
 
