@@ -318,6 +318,45 @@ TEST_F(ImpostorGroupImages, NoGroupStraddlesAReflector) {
   EXPECT_TRUE(meetsFloor(reflectorPsnr(two), floors::kBillboardGroupsBesideAReflector));
 }
 
+// --impostor-memory is the user's setting: one that cannot be met is bad input (an InputError,
+// exit 2, naming it and what would fit), never a fallback; and depthmap counts against it the
+// billboard stage beside its maps (its planar objects' billboards, the capture's textures), which
+// went unchecked: 2,048-texel billboards of teapot-sphere's floor take 44 MiB alone.
+TEST_F(ImpostorGroupImages, AnImpostorMemoryThatCannotBeMetIsBadInput) {
+  const Scene scene = makeBuiltinScene("teapot-sphere");
+  FrameRenderer renderer(scene, {64, 48});
+  FrameSettings settings;
+  using Params = std::map<std::string, std::string>;
+  const auto refused = [&](const std::string& method, const Params& params) {
+    try {
+      renderer.createMethod(method, params, settings);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  // One group of 1,024-texel depth maps is 30 MiB.
+  std::string why = refused("depthmap", {{"depthmap-size", "1024"}, {"impostor-memory", "16"}});
+  EXPECT_NE(why.find("--impostor-memory 16 (MiB) cannot be met"), std::string::npos) << why;
+  EXPECT_NE(why.find("allowed: 16..1048576"), std::string::npos) << why;
+  // The stage's fixed textures count, for depthmap as for billboard.
+  for (const char* method : {"depthmap", "billboard"}) {
+    why = refused(method, {{"billboard-size", "2048"}, {"impostor-memory", "32"}});
+    EXPECT_NE(why.find("cannot be met"), std::string::npos) << method << ": " << why;
+  }
+  // A count of groups beyond the cap says what would fit.
+  why = refused("billboard", {{"billboard-size", "1024"},
+                              {"impostor-groups", "per-object"},
+                              {"impostor-memory", "30"}});
+  EXPECT_NE(why.find("beyond --impostor-memory 30"), std::string::npos) << why;
+  // Within it, both draw.
+  for (const char* method : {"depthmap", "billboard"}) {
+    auto m = renderer.createMethod(method, {{"billboard-size", "2048"}, {"impostor-memory", "128"}},
+                                   settings);
+    EXPECT_EQ(m->fallbackReason(), "") << method;
+  }
+}
+
 TEST_F(ImpostorGroupImages, CountsTheImpostorsEachRayTests) {
   // spheres9 at order 2: every ray, first bounce or second, tests its reflector's list, the
   // floor's billboard, one per group of the six other objects and the eight other reflectors'

@@ -77,9 +77,14 @@ GroupCost depthMapCost(const Scene& scene, const DepthMapOptions& options,
 Grouping depthMapGroups(const MethodSetup& setup, const DepthMapOptions& options,
                         const SrdmSettings& srdm) {
   const Scene& scene = setup.gpu.scene();
-  const BillboardStageOptions stage = billboardStageOptions(setup.params);
-  return chooseGroups(scene, depthMappedObjects(scene), stage.groups,
-                      depthMapCost(scene, options, srdm), impostorGroupCaps(stage), "depth maps",
+  BillboardStageOptions stage = billboardStageOptions(setup.params);
+  // The billboard stage beside the maps (the planar objects, the reflective billboards, its
+  // captures' textures) takes its bytes from the same --impostor-memory.
+  const std::vector<int> objects = depthMappedObjects(scene);
+  stage.set.excluded = objects;
+  GroupCost cost = depthMapCost(scene, options, srdm);
+  cost.fixed_bytes += billboardStageCost(scene, stage).fixed_bytes;
+  return chooseGroups(scene, objects, stage.groups, cost, impostorGroupCaps(stage), "depth maps",
                       "a smaller --srdm-n or --self-maps");
 }
 

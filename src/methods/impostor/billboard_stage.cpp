@@ -23,8 +23,12 @@ constexpr Choice<bool> kLastBounceReflective[] = {{"all", true}, {"diffuse", fal
 // What the billboards cost per group and besides: one surface layer per group and reflector;
 // the planar objects' layers and the reflective billboards' (a surface and a surface-point
 // layer for each ordered pair of reflectors) are fixed.
-GroupCost billboardCost(const Scene& scene, const BillboardStageOptions& options, int planar,
-                        int objects) {
+}  // namespace
+
+GroupCost billboardStageCost(const Scene& scene, const BillboardStageOptions& options) {
+  const BillboardedInstances instances = billboardedInstances(scene, options.set, 0.0f);
+  const int64_t planar = int64_t(instances.planar.size());
+  const bool objects = !instances.objects.empty();
   const int64_t reflectors = int64_t(scene.reflectorInstances().size());
   const int size = options.billboard_size;
   const uint64_t surface =
@@ -33,13 +37,18 @@ GroupCost billboardCost(const Scene& scene, const BillboardStageOptions& options
   const int64_t pairs = reflectors * (reflectors - 1);
   GroupCost cost;
   cost.fixed_layers = planar + pairs;
-  cost.layers_per_group = objects > 0 ? reflectors : 0;
+  cost.layers_per_group = objects ? reflectors : 0;
   cost.fixed_bytes = uint64_t(planar + pairs) * surface + uint64_t(pairs) * position;
-  cost.bytes_per_group = objects > 0 ? uint64_t(reflectors) * surface : 0;
+  // The capture's depth buffer, and the environment of what has no billboard.
+  cost.fixed_bytes += gpu::storageBytes(GL_DEPTH_COMPONENT32F, size, size, 1, 1);
+  if (!instances.unbillboarded.empty() || options.set.morph_height > 0.0f) {
+    const int env = options.envmap_size;
+    cost.fixed_bytes +=
+        6 * gpu::storageBytes(GL_RGBA16F, env, env, 1, gpu::Texture::fullMipLevels(env));
+  }
+  cost.bytes_per_group = objects ? uint64_t(reflectors) * surface : 0;
   return cost;
 }
-
-}  // namespace
 
 GroupCaps impostorGroupCaps(const BillboardStageOptions& options) {
   GroupCaps caps;
@@ -111,8 +120,7 @@ BillboardStage::BillboardStage(const BillboardStageOptions& options, const Scene
     : options_(options), capture_(options.billboard_size) {
   const BillboardedInstances instances = billboardedInstances(scene, options_.set, 0.0f);
   grouping_ = chooseGroups(
-      scene, instances.objects, options_.groups,
-      billboardCost(scene, options_, int(instances.planar.size()), int(instances.objects.size())),
+      scene, instances.objects, options_.groups, billboardStageCost(scene, options_),
       impostorGroupCaps(options_), "billboards",
       "a smaller --billboard-size, or fewer reflectors (--reflectors)");
   options_.set.groups = grouping_.memberLists();

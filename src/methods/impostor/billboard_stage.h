@@ -40,6 +40,10 @@ std::vector<ParamSpec> billboardStageParams();
 BillboardStageOptions billboardStageOptions(const ParamValues& params);
 // The caps of --impostor-groups auto: the driver's texture layers, --impostor-memory.
 GroupCaps impostorGroupCaps(const BillboardStageOptions& options);
+// What the stage's textures cost as a function of its group count (impostor_groups.h): the
+// planar objects' and the reflective billboards' layers, the capture's depth, the environment
+// cube where something has no billboard, and a billboard a reflector per group.
+GroupCost billboardStageCost(const Scene& scene, const BillboardStageOptions& options);
 
 // The worst case of impostor_trace.glsl's loops in one invocation (gpu/loop_budget.h): `order`
 // bounces, each testing a list of `list` entries (nearest_billboard) and running the method's

@@ -188,16 +188,22 @@ Grouping chooseGroups(const Scene& scene, const std::vector<int>& objects,
   Grouping g;
   g.objects = int(objects.size());
   g.fit = groupsThatFit(cost, caps, &g.limit);
+  // What the method needs whatever its groups, beyond --impostor-memory: a setting of the user's
+  // that cannot be met (bad input), not a driver limit.
+  const auto mib = [](uint64_t bytes) { return (bytes + (1u << 20) - 1) >> 20; };
+  const int least = objects.empty() ? 0 : 1;
+  if (cost.bytes(least) > caps.max_bytes)
+    throwInput(
+        "{}: --impostor-memory {} (MiB) cannot be met: {} need at least {} MiB on this scene "
+        "(allowed: 16..1048576)",
+        method, caps.max_bytes >> 20, least ? "one impostor group and the fixed textures" :
+                                              "the fixed textures", mib(cost.bytes(least)));
   if (objects.empty()) return g;
   if (g.fit == 0)
     throwGpu(
-        "{}: even one impostor group needs {} texture layers and {} MiB, beyond the {} "
-        "(the driver's {} layers, --impostor-memory {} MiB); {} would fit",
-        method, cost.layers(1), (cost.bytes(1) + (1u << 20) - 1) >> 20, g.limit, caps.max_layers,
-        caps.max_bytes >> 20,
-        cost.layers(1) > caps.max_layers
-            ? shrink_hint
-            : fmt::format("--impostor-memory {} (MiB)", (cost.bytes(1) >> 20) + 1));
+        "{}: even one impostor group needs {} texture layers, beyond the driver's "
+        "GL_MAX_ARRAY_TEXTURE_LAYERS ({}); {} would fit",
+        method, cost.layers(1), caps.max_layers, shrink_hint);
   // A group that meets a reflector is split beyond the count, as far as the storage allows (the
   // driver's layers and the memory cap; not the groups-per-reflector cap, a cost).
   GroupCaps storage = caps;
@@ -231,6 +237,13 @@ Grouping chooseGroups(const Scene& scene, const std::vector<int>& objects,
         "fit",
         method, groupSettingText(setting), count, g.objects, g.layers, caps.max_layers,
         std::min(g.fit, g.objects));
+  if (g.bytes > caps.max_bytes)
+    throwInput(
+        "{}: --impostor-groups {} makes {} groups of {} objects, needing {} MiB, beyond "
+        "--impostor-memory {} (MiB); --impostor-groups auto ({} groups) or --impostor-memory {} "
+        "would fit",
+        method, groupSettingText(setting), count, g.objects, mib(g.bytes), caps.max_bytes >> 20,
+        std::min(g.fit, g.objects), mib(g.bytes));
   return g;
 }
 
