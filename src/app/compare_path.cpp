@@ -13,6 +13,7 @@
 #include "app/compare_common.h"
 #include "core/progress.h"
 #include "eval/metrics.h"
+#include "eval/temporal.h"
 
 namespace mirage::app {
 
@@ -23,6 +24,7 @@ struct PathMethod {
   std::unique_ptr<Method> method;
   gpu::Clock clock = gpu::Clock::kWall;
   MethodReport report;
+  TemporalError temporal;
 };
 
 // N equal steps from the path's first key to its last, both included (one frame: the first).
@@ -88,6 +90,7 @@ void comparePath(CompareRun& run, const CameraDesc& camera, int frames, int chec
     methods.push_back(std::move(p));
   }
   Progress progress("compare", size_t(frames) * methods.size());
+  TemporalError reference_change;
   for (int f = 0; f < frames; ++f) {
     const float time = times[size_t(f)];
     const View view(camera.at(time), run.size), frame_view(camera.at(time), run.frame_size);
@@ -103,7 +106,9 @@ void comparePath(CompareRun& run, const CameraDesc& camera, int frames, int chec
         reference = {display, frame.ids, std::nullopt};
         reference.causes = traceCauses(run, frame_view, time, frame.ids);
         if (f == 0 && check_spp > 0) checkReference(run, view, time, reference, check_spp);
+        reference_change.add(display, Image(display.width(), display.height()), frame.ids);
       }
+      p.temporal.add(display, reference.display, reference.mask);
       Image2D<float> flip;
       p.report.frame_regions.emplace_back();
       p.report.frame_metrics.push_back(
@@ -116,6 +121,8 @@ void comparePath(CompareRun& run, const CameraDesc& camera, int frames, int chec
       progress.advance();
     }
   }
+  run.report.path.frame_reference_change = reference_change.perFrame();
+  run.report.path.reference_change = reference_change.mean();
   if (run.timing_renderer) timePathNative(run, camera, methods);
   for (PathMethod& p : methods) {
     MethodReport m = describeMethod(run, p.name, *p.method);
@@ -124,12 +131,14 @@ void comparePath(CompareRun& run, const CameraDesc& camera, int frames, int chec
     m.frame_ms = std::move(p.report.frame_ms);
     m.frame_stats = std::move(p.report.frame_stats);
     m.shown = std::move(p.report.shown);
+    m.frame_temporal_error = p.temporal.perFrame();
+    m.temporal_error = p.temporal.mean();
     summarize(m);
     spdlog::info(
         "{:>16}: {} frames, reflector PSNR mean {:6.2f} dB, worst {:6.2f}; FLIP reflector mean "
-        "{:.4f}, worst {:.4f}; {:8.2f} ms",
+        "{:.4f}, worst {:.4f}; temporal error {:.4f}; {:8.2f} ms",
         m.name, frames, m.metrics.psnr_reflector, m.worst.psnr_reflector, m.metrics.flip_reflector,
-        m.worst.flip_reflector, m.ms);
+        m.worst.flip_reflector, m.temporal_error, m.ms);
     run.report.methods.push_back(std::move(m));
   }
 }

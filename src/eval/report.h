@@ -56,12 +56,20 @@ struct MethodReport {
   std::vector<RegionSet> frame_regions;
   ImageMetrics worst;
   std::vector<ShownFrame> shown;
+  // Its temporal error on reflector pixels (eval/temporal.h): the mean over the frames after the
+  // first, and each frame's (NaN for the first).
+  double temporal_error = 0.0;
+  std::vector<double> frame_temporal_error;
 };
 
 // The frames of a camera path a report covers; no times: one view.
 struct PathInfo {
   std::string camera;        // the scene camera whose path was sampled
   std::vector<float> times;  // scene time of each frame, seconds
+  // The reference's own frame-to-frame change on its reflector pixels (eval/temporal.h: the
+  // reference against black): the scale a method's temporal error is read against.
+  double reference_change = 0.0;
+  std::vector<double> frame_reference_change;
 };
 
 // How the reference was sampled, and how far that is from converged (`--reference-check`).

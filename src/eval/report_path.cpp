@@ -125,6 +125,9 @@ const Column kPathColumns[] = {
      [](const MethodReport& m) { return m.worst.flip_reflector; }},
     {"PSNR mean", "all pixels, mean over the frames; higher is better", "{:.2f}", true,
      [](const MethodReport& m) { return m.metrics.psnr; }},
+    {"temporal error", "mean frame-to-frame change of the error on reflector pixels (display "
+     "values, 0..1); the reference's own change is above the table; lower is better",
+     "{:.4f}", false, [](const MethodReport& m) { return m.temporal_error; }},
     {"ms", "mean frame after the first; lower is better", "{:.2f}", false,
      [](const MethodReport& m) { return m.ms; }},
     kFirstFrameColumn,
@@ -222,6 +225,10 @@ void addPathJson(const CompareReport& r, nlohmann::json& j) {
   path["camera"] = r.path.camera;
   path["frames"] = r.path.times.size();
   path["times"] = r.path.times;
+  path["reference_change_reflector"] = number(r.path.reference_change);
+  nlohmann::json change = nlohmann::json::array();
+  for (double v : r.path.frame_reference_change) change.push_back(number(v));
+  path["per_frame_reference_change_reflector"] = change;
   j["path"] = path;
   for (const MethodReport& m : r.methods) {
     nlohmann::json& e = j["methods"][m.name];
@@ -239,6 +246,9 @@ void addPathJson(const CompareReport& r, nlohmann::json& j) {
     }
     per_frame["ms"] = nlohmann::json::array();
     for (double ms : m.frame_ms) per_frame["ms"].push_back(number(ms));
+    e["temporal_error_reflector"] = number(m.temporal_error);
+    per_frame["temporal_error_reflector"] = nlohmann::json::array();
+    for (double v : m.frame_temporal_error) per_frame["temporal_error_reflector"].push_back(number(v));
     // The methods' counters per frame (e.g. zexel's exposed_fraction); `stats` holds their means.
     nlohmann::json stats = nlohmann::json::object();
     for (const auto& frame : m.frame_stats)
@@ -266,8 +276,11 @@ std::string pathReportHtml(const CompareReport& r) {
   parts.setup = fmt::format(
       R"(Camera path <b>{}</b>: {} frames from t = {:.2f} s to {:.2f} s. Each method
 renders the frames in order and keeps its state from one frame to the next, as in an animation.
+The reference's reflections change by {} a frame on its reflector pixels (the mean absolute
+change of display values): the scale of the methods' temporal errors.
 )",
-      escape(r.path.camera), r.path.times.size(), first, last);
+      escape(r.path.camera), r.path.times.size(), first, last,
+      cell(r.path.reference_change, "{:.4f}"));
   parts.kept = " Images are kept for the first, middle and last frame.";
   parts.reference_section = ref ? referenceSection(r, *ref) : "";
   parts.metrics =

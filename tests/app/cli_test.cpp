@@ -245,6 +245,16 @@ TEST_F(CliWithGl, ComparePathFramesWritesPerFrameMetrics) {
   }
   for (const nlohmann::json& v : j["methods"]["planar"]["per_frame"]["psnr_reflector"])
     EXPECT_TRUE(v.is_null());
+  // The temporal error: 0 for the reference against itself; for none, whose mirror keeps one
+  // colour, its error changes as the reference does, its own change (but on the mirror's
+  // outline, where none's pixels are not the mirror's: measured 1.5 % apart).
+  EXPECT_EQ(j["methods"]["planar"]["temporal_error_reflector"].get<double>(), 0.0);
+  const double change = j["path"]["reference_change_reflector"].get<double>();
+  EXPECT_GT(change, 0.01);
+  EXPECT_NEAR(j["methods"]["none"]["temporal_error_reflector"].get<double>(), change,
+              0.05 * change);
+  EXPECT_EQ(j["methods"]["none"]["per_frame"]["temporal_error_reflector"].size(), 3u);
+  EXPECT_TRUE(j["methods"]["none"]["per_frame"]["temporal_error_reflector"][0].is_null());
   EXPECT_TRUE(std::filesystem::exists(dir / "index.html"));
   EXPECT_TRUE(std::filesystem::exists(dir / "none.frame1.png"));
   EXPECT_FALSE(std::filesystem::exists(dir / "none.png"));  // one view's names are not used
