@@ -160,8 +160,11 @@ TEST_F(HybridImages, BackFacingPointsOfClosedObjectsAreSkipped) {
   const ivec2 size{360, 256};
   FrameRenderer renderer(scene, size);
   std::map<std::string, double> cull, keep;
-  renderWith(renderer, scene, size, kDense, 0.0f, &cull);
-  std::map<std::string, std::string> params = kDense;
+  // Every point: the level of detail would take as many projecting points either way.
+  std::map<std::string, std::string> every = kDense;
+  every["hybrid-lod"] = "0";
+  renderWith(renderer, scene, size, every, 0.0f, &cull);
+  std::map<std::string, std::string> params = every;
   params["hybrid-backfaces"] = "keep";
   renderWith(renderer, scene, size, params, 0.0f, &keep);
   EXPECT_EQ(keep.at("points_facing_away"), 0.0);
@@ -175,7 +178,7 @@ TEST_F(HybridImages, BackFacingPointsOfClosedObjectsAreSkipped) {
 
   FrameSettings settings;
   settings.order = 1;
-  RenderPair culled = renderWithTruth(scene, "hybrid", size, settings, kDense);
+  RenderPair culled = renderWithTruth(scene, "hybrid", size, settings, every);
   RenderPair kept = renderWithTruth(scene, "hybrid", size, settings, params);
   std::printf("reflector PSNR: back faces culled %.2f dB, kept %.2f dB\n", reflectorPsnr(culled),
               reflectorPsnr(kept));
@@ -235,8 +238,8 @@ TEST_F(HybridImages, ConcaveDishSplatsSecondProjectionsInsideOneC3rc) {
 }
 
 // The level of detail projects a uniform subsample of a C3RC's kept points (about --hybrid-lod
-// per visible pixel of its triangle) with larger splats: far fewer projections, close to the
-// full image.
+// points with a projection per visible pixel of its triangle, from a probe of its items) with
+// larger splats: far fewer projections, close to the full image.
 TEST_F(HybridImages, LevelOfDetailProjectsFewerPointsAndStaysClose) {
   const Scene scene = objectsOnly();
   const ivec2 size{360, 256};
@@ -246,19 +249,23 @@ TEST_F(HybridImages, LevelOfDetailProjectsFewerPointsAndStaysClose) {
   every["hybrid-lod"] = "0";
   renderWith(renderer, scene, size, every, 0.0f, &full);
   std::map<std::string, std::string> params = kDense;
-  params["hybrid-lod"] = "16";
+  params["hybrid-lod"] = "2";
   renderWith(renderer, scene, size, params, 0.0f, &lod);
+  std::printf("projected: every point %.0f (%.0f with a projection), --hybrid-lod 2 %.0f (%.0f)\n",
+              full.at("points_projected"), full.at("points_with_projection"),
+              lod.at("points_projected"), lod.at("points_with_projection"));
   EXPECT_EQ(full.at("lod_points"), full.at("cull_points_kept"));
   EXPECT_EQ(full.at("points_projected"), full.at("cull_points_kept"));
+  EXPECT_EQ(full.at("lod_probe_points"), 0.0);
   EXPECT_EQ(lod.at("cull_points_kept"), full.at("cull_points_kept"));
-  EXPECT_LT(lod.at("points_projected"), 0.25 * full.at("points_projected"));
+  EXPECT_GT(lod.at("lod_probe_points"), 0.0);
+  EXPECT_LT(lod.at("points_projected"), 0.5 * full.at("points_projected"));
+  EXPECT_LT(lod.at("points_with_projection"), 0.5 * full.at("points_with_projection"));
 
   FrameSettings settings;
   settings.order = 1;
   RenderPair pair = renderWithTruth(scene, "hybrid", size, settings, params);
-  std::printf("reflector PSNR with --hybrid-lod 16: %.2f dB\n", reflectorPsnr(pair));
-  // Measured at 360x256 with 400,000 points: 30.0 dB (29.3 before the normal cones; 30.6 dB with
-  // every point).
+  std::printf("reflector PSNR with --hybrid-lod 2: %.2f dB\n", reflectorPsnr(pair));
   EXPECT_TRUE(psnrAtLeast(pair.gpu, pair.cpu, floors::kHybridLod, &pair.cpu_ids));
 }
 
@@ -288,18 +295,18 @@ TEST(HybridCli, BadParametersExitWithTheAllowedRange) {
   }
 }
 
-// auto (the default) is 16 points a pixel with the CPU culling and every point with the GPU
+// auto (the default) is 8 points a pixel with the CPU culling and every point with the GPU
 // traversal; a density with the GPU traversal is an error.
-TEST_F(HybridImages, LevelOfDetailAutoIsSixteenWithCpuCullingAndOffOnTheGpu) {
+TEST_F(HybridImages, LevelOfDetailAutoIsEightWithCpuCullingAndOffOnTheGpu) {
   const Scene scene = objectsOnly();
   const ivec2 size{200, 140};
   FrameRenderer renderer(scene, size);
-  std::map<std::string, double> autos, sixteen, gpu;
+  std::map<std::string, double> autos, eight, gpu;
   const Image a = renderWith(renderer, scene, size, kDense, 0.0f, &autos);
   std::map<std::string, std::string> p = kDense;
-  p["hybrid-lod"] = "16";
-  const Image b = renderWith(renderer, scene, size, p, 0.0f, &sixteen);
-  EXPECT_EQ(autos.at("points_projected"), sixteen.at("points_projected"));
+  p["hybrid-lod"] = "8";
+  const Image b = renderWith(renderer, scene, size, p, 0.0f, &eight);
+  EXPECT_EQ(autos.at("points_projected"), eight.at("points_projected"));
   EXPECT_LT(autos.at("points_projected"), autos.at("cull_points_kept"));
   EXPECT_TRUE(mostPixelsWithin(b, a, 0.0f, 0.0, nullptr, "lod-auto"));
   // The GPU traversal's auto projects what the CPU culling keeps with every point.

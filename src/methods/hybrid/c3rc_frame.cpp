@@ -32,10 +32,12 @@ struct Local {
   long long degenerate = 0, multiple = 0, kept_points = 0, lod_points = 0;
 };
 
-// The stride through a C3RC's kept points that leaves about `density` per visible pixel.
-float lodStride(float density, uint32_t pixels, long long kept) {
+// The stride through a C3RC's kept points that leaves about `density` per visible pixel, and at
+// least `minimum` of them.
+float lodStride(float density, uint32_t pixels, long long kept, long long minimum) {
   if (density <= 0.0f || kept == 0) return 1.0f;
-  return std::max(1.0f, float(double(kept) / (double(density) * double(pixels))));
+  const double wanted = std::max(double(density) * double(pixels), double(minimum));
+  return std::max(1.0f, float(double(kept) / wanted));
 }
 
 // The visible reflector triangles large enough to project (counted in `frame`).
@@ -100,10 +102,11 @@ void addCloudItems(int c3rc, const PointCloud& cloud, const C3rcData& in_object,
 }
 
 // The level-of-detail stride of the items from `first_item` on (one C3RC's), from its pixels.
-void setLodStride(Local& local, size_t first_item, float density, uint32_t pixels) {
+void setLodStride(Local& local, size_t first_item, float density, long long minimum,
+                  uint32_t pixels) {
   long long kept = 0;
   for (size_t k = first_item; k < local.items.size(); ++k) kept += local.items[k].z;
-  const float stride = lodStride(density, pixels, kept);
+  const float stride = lodStride(density, pixels, kept, minimum);
   for (size_t k = first_item; k < local.items.size(); ++k) {
     local.items[k].w = std::bit_cast<int>(stride);
     local.lod_points += shading::hybrid_taken_points(local.items[k].z, stride);
@@ -172,6 +175,47 @@ std::vector<SplatRun> itemRuns(const std::vector<ivec4>& items, const RunLimits&
   return runs;
 }
 
+void restrideByProjections(C3rcFrame& frame, std::span<const uint32_t> seen, float density) {
+  MIRAGE_CHECK_EQ(seen.size(), frame.items.size());
+  std::vector<ivec4> items;
+  items.reserve(frame.items.size());
+  frame.lod_points = 0;
+  frame.dropped_c3rcs = 0;
+  frame.dropped_items = 0;
+  for (size_t a = 0; a < frame.items.size();) {
+    const int c = frame.items[a].x;
+    size_t b = a;
+    long long kept = 0, probed = 0, hits = 0;
+    for (; b < frame.items.size() && frame.items[b].x == c; ++b) {
+      kept += frame.items[b].z;
+      probed += takenPoints(frame.items[b]);
+      hits += seen[b];
+    }
+    // The projecting fraction the probe found (half a point where it found none: a few probes
+    // say little), the stride that takes `density` points with a projection a pixel.
+    const double fraction = std::max(double(hits), 0.5) / double(std::max<long long>(probed, 1));
+    const float stride = std::max(
+        1.0f, float(double(kept) * fraction / (double(density) * double(frame.pixels[size_t(c)]))));
+    const size_t before = items.size();
+    for (size_t k = a; k < b; ++k) {
+      // An item whose every point the probe took, none with a projection: nothing of it shows.
+      // (One the probe only sampled is kept whatever it found: a run of 4,096 points of which a
+      // few project is missed by its few probes, and those few are an object's thin parts.)
+      if (seen[k] == 0 && takenPoints(frame.items[k]) >= frame.items[k].z) {
+        ++frame.dropped_items;
+        continue;
+      }
+      ivec4 item = frame.items[k];
+      item.w = std::bit_cast<int>(stride);
+      frame.lod_points += takenPoints(item);
+      items.push_back(item);
+    }
+    if (items.size() == before) ++frame.dropped_c3rcs;
+    a = b;
+  }
+  frame.items = std::move(items);
+}
+
 C3rcFrame buildC3rcFrame(const Scene& scene, const std::vector<int>& reflectors,
                          const std::vector<std::vector<uint32_t>>& pixels,
                          const std::vector<mat4>& matrices, const vec3& eye,
@@ -188,6 +232,7 @@ C3rcFrame buildC3rcFrame(const Scene& scene, const std::vector<int>& reflectors,
     to_object.push_back(glm::inverse(matrices[size_t(c.points.instance)]));
 
   frame.c3rcs.resize(triangles.size());
+  frame.pixels.resize(triangles.size());
   tbb::enumerable_thread_specific<Local> locals;
   tbb::parallel_for(size_t(0), triangles.size(), [&](size_t i) {
     Local& local = locals.local();
@@ -202,14 +247,16 @@ C3rcFrame buildC3rcFrame(const Scene& scene, const std::vector<int>& reflectors,
       frame.c3rcs[i].info.z = float(MIRAGE_C3RC_DEGENERATE);
       return;
     }
-    const C3rcData c = reflectorC3rc(eye, v, n, options.reach, options.eye_scaled);
+    C3rcData c = reflectorC3rc(eye, v, n, options.reach, options.eye_scaled);
+    c.counts.y = instance + 1;  // the triangle-ID image's word: its splats land on it only
     frame.c3rcs[i] = c;
+    frame.pixels[i] = pixels[size_t(ref.reflector)][ref.triangle];
     if (int(c.info.z) & MIRAGE_C3RC_MULTIPLE) ++local.multiple;
     const size_t first_item = local.items.size();
     for (size_t k = 0; options.cull_on_cpu && k < points.clouds().size(); ++k)
       addCloudItems(int(i), points.clouds()[k], transformC3rc(c, to_object[k]), options.culling,
                     options.cull_backfaces, local);
-    setLodStride(local, first_item, options.lod_density,
+    setLodStride(local, first_item, options.lod_density, options.lod_minimum,
                  pixels[size_t(ref.reflector)][ref.triangle]);
   });
   for (Local& local : locals) {

@@ -4,6 +4,7 @@
 // (C3RC, surviving leaf). Runs on the CPU over TBB.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "core/camera.h"
@@ -28,13 +29,15 @@ struct C3rcFrameOptions {
   // Level of detail: at most this many points per visible pixel of a C3RC's triangle are
   // projected (a uniform stride through its kept leaves, whose splats grow to match); 0: all.
   float lod_density = 0.0f;
+  long long lod_minimum = 0;  // and at least this many points a C3RC (the probe's: see below)
 
   // false: the C3RCs only, no items (the GPU culls them: kd_gpu_cull.h).
   bool cull_on_cpu = true;
 };
 
 struct C3rcFrame {
-  std::vector<C3rcData> c3rcs;  // world space
+  std::vector<C3rcData> c3rcs;   // world space
+  std::vector<uint32_t> pixels;  // the visible pixels of each C3RC's triangle
   // C3RC, first point (shared buffer), point count, the stride through them (float bits, ≥ 1)
   std::vector<ivec4> items;
   long long lod_points = 0;            // points the items take (the strides applied)
@@ -43,6 +46,8 @@ struct C3rcFrame {
   long long small_triangles = 0;       // visible, but below min_pixels: environment instead
   long long degenerate_triangles = 0;  // zero area or non-finite: skipped
   long long multiple_c3rcs = 0;        // C3RCs whose sidedness allows a second projection
+  long long dropped_c3rcs = 0;  // C3RCs left without items by the probe (restrideByProjections)
+  long long dropped_items = 0;  // items whose every point the probe took, none projecting
   CullCounters cull;
   double ms = 0.0;  // wall time of the whole phase
 };
@@ -71,6 +76,16 @@ std::vector<SplatRun> itemRuns(const std::vector<ivec4>& items, const RunLimits&
 // its points (lanes points a step), `point_cost` each.
 long long runLoopCost(const std::vector<ivec4>& items, const SplatRun& run, long long point_cost,
                       int lanes);
+
+// The level of detail by what can show: given each item's taken points with a projection (a probe
+// pass of the splatting, `seen`), strides that take `density` such points a visible pixel of a
+// C3RC's triangle (the projecting fraction the probe found over the C3RC's items, applied to its
+// kept points), and no item whose every point the probe took and found none with a projection.
+// Items of one C3RC are consecutive.
+void restrideByProjections(C3rcFrame& frame, std::span<const uint32_t> seen, float density);
+// The probe's points a C3RC at least: its projecting fraction is read from them (a thin object,
+// glass's straw, can hide among fewer).
+inline constexpr long long kProbeMinimum = 64;
 
 // `pixels[r][t]`: visible pixels of triangle t of reflector instance `reflectors[r]`;
 // `matrices`: every instance's current transform; `meshes` (when given): every instance's

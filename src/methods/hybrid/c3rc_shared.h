@@ -20,8 +20,8 @@
 #include "shading/glsl_compat.h"
 
 // C3rcData.info.z flags
-#define MIRAGE_C3RC_MULTIPLE 1  // the sidedness test allows a second projection
-#define MIRAGE_C3RC_HULL 8      // bounding planes kept per C3RC
+#define MIRAGE_C3RC_MULTIPLE 1     // the sidedness test allows a second projection
+#define MIRAGE_C3RC_HULL 8         // bounding planes kept per C3RC
 #define MIRAGE_C3RC_ROOT_STEPS 40  // the most steps of a bracketed root (c3rc_bracketed_root)
 
 // A C3rcData.info.z flag: the placeholder of a degenerate triangle (never culled nor splatted).
@@ -39,7 +39,7 @@ struct C3rcData {
   vec4 folds;       // [x, y] and [z, w]: two λ intervals (empty where the start is above the
                     // end) that hold every λ where T(λ) may fold (c3rc_cull.h), within info.xy
   vec4 hull[MIRAGE_C3RC_HULL];  // planes a·x ≤ h (xyz = a, unit; w = h) around the view volume
-  ivec4 counts;                 // x: planes in hull
+  ivec4 counts;                 // x: planes in hull; y: the reflector's instance + 1 (0: unset)
 };
 
 // The view volume lies in the hull: a point outside a plane (by more than rounding) has no

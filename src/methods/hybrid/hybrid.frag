@@ -18,8 +18,9 @@ layout(binding = MIRAGE_UNIT_HYBRID_PROBES) uniform samplerCubeArray u_probes;
 
 vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflector) {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  uint index = winners[pixel.y * int(frame.viewport.x) + pixel.x];
-  if (index != MIRAGE_HYBRID_EMPTY) {
+  uint word = winners[pixel.y * int(frame.viewport.x) + pixel.x];
+  if (word != MIRAGE_HYBRID_EMPTY) {
+    uint index = word & MIRAGE_HYBRID_INDEX_MASK;
     vec4 at = positions[index];  // object space; w: the instance
     PointAttributes p = attributes[index];
     InstanceData inst = instances[int(at.w)];

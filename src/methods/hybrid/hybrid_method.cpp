@@ -49,10 +49,12 @@ KdTreeOptions treeOptions(const ParamValues& params) {
   return o;
 }
 
-// --hybrid-lod auto: points per visible output pixel of a reflector triangle, the density that
-// kept every scene measured within 0.2 dB reflector PSNR of every point (matched 2x2 sampling:
-// docs/data/hybrid-lod/) while it cut teapot-dragon's projections 13x.
-constexpr double kAutoLodDensity = 16.0;
+// --hybrid-lod auto: points with a projection per visible output pixel of a reflector triangle,
+// the density that kept every reflected object of teapot-dragon, teapot-sphere, glass and
+// concave-dish within 1 dB of every point (matched 2x2 sampling: docs/data/hybrid-lod/).
+constexpr double kAutoLodDensity = 8.0;
+// The probe's points a visible output pixel (each C3RC's projecting fraction).
+constexpr double kProbeDensity = 1.0;
 constexpr double kMostLodDensity = 1.0e6;
 
 // --hybrid-lod: auto (kAutoLodDensity with the CPU culling; every point with the GPU traversal,
@@ -98,6 +100,7 @@ class HybridMethod final : public Method {
         lod_density_(float(lodDensity(setup.params.text("hybrid-lod"),
                                       setup.params.choice<bool>("hybrid-cull-on", kCullOnGpu)) /
                            double(pixel_scale_ * pixel_scale_))),
+        probe_density_(float(kProbeDensity / double(pixel_scale_ * pixel_scale_))),
         probes_(setup.params.integer("envmap-size")),
         recapture_(probeRecapture(setup.params)),
         splat_({first_only_, keep_backfaces_, splat_size_, pixel_scale_}),
@@ -110,6 +113,11 @@ class HybridMethod final : public Method {
     reflectors_ = scene.reflectorInstances();
     for (int i = 0; i < int(scene.instances.size()); ++i)
       if (!scene.isReflector(i) && !isPointSampled(i)) background_.push_back(i);
+    if (store_.pointCount() > (size_t(1) << MIRAGE_HYBRID_INDEX_BITS))
+      throwInput(
+          "hybrid: {} point samples (the objects' mesh vertices) exceed the {} a winner word "
+          "indexes; set --points (up to 4000000)",
+          store_.pointCount(), size_t(1) << MIRAGE_HYBRID_INDEX_BITS);
     if (setup.params.choice<bool>("hybrid-cull-on", kCullOnGpu))
       gpu_cull_ = std::make_unique<KdGpuCull>(store_);
   }
@@ -134,7 +142,8 @@ class HybridMethod final : public Method {
 
     C3rcFrameOptions options;
     options.min_pixels = min_pixels_;
-    options.lod_density = lod_density_;
+    options.lod_density = lod_density_ > 0.0f ? probe_density_ : 0.0f;
+    options.lod_minimum = kProbeMinimum;
     options.culling = culling_;
     options.cull_backfaces = !keep_backfaces_;
     options.eye_scaled = eye_scaled_;
@@ -182,6 +191,10 @@ class HybridMethod final : public Method {
     s["splat_items"] = double(itemCount());
     s["cull_points_kept"] = double(last_.kept_points);
     s["lod_points"] = double(last_.lod_points);
+    s["lod_probe_points"] = double(probe_points_);
+    s["lod_probe_ms"] = probe_ms_;
+    s["lod_c3rcs_dropped"] = double(last_.dropped_c3rcs);
+    s["lod_items_dropped"] = double(last_.dropped_items);
     s["points_projected"] = double(splat_.counter(0));
     s["projections"] = double(splat_.counter(1));
     s["splats_written"] = double(splat_.counter(2));
@@ -202,7 +215,7 @@ class HybridMethod final : public Method {
       s["cull_transform_ms"] = gpu_last_.transform_ms;
       s["cull_gpu_dispatches"] = double(gpu_last_.dispatches);
     }
-    s["splat_ms"] = splat_.ms();
+    s["splat_ms"] = splat_.ms() + probe_ms_;
     return s;
   }
 
@@ -251,6 +264,7 @@ class HybridMethod final : public Method {
     const ivec2 size = frame.target.size();
     if (!ids_fbo_ || ids_size_ != size) {
       ids_ = gpu::Texture::create2D(GL_RG32UI, size.x, size.y);
+      ids_.setFilter(GL_NEAREST, GL_NEAREST);  // an integer texture is incomplete with linear
       ids_fbo_ = std::make_unique<gpu::Framebuffer>();
       ids_fbo_->attachColor(0, ids_);
       ids_fbo_->attachDepth(frame.target.depth());
@@ -288,12 +302,26 @@ class HybridMethod final : public Method {
   void splat(FrameContext& frame) {
     SplatItems items;
     items.count = itemCount();
+    probe_ms_ = 0.0;
+    probe_points_ = 0;
     if (gpu_cull_) {
       items.gpu = &gpu_cull_->items();
       items.gpu_points = store_.largestLeaf();
-    } else
+    } else {
       items.cpu = &last_.items;
-    splat_.run(frame, store_, last_.c3rcs, items);
+      if (lod_density_ > 0.0f && items.count > 0) {
+        // The level of detail counts the points that can show: a probe through kProbeDensity
+        // points a pixel finds each C3RC's projecting fraction, then the strides take
+        // lod_density_ of those a pixel (restrideByProjections).
+        splat_.run(frame, store_, last_.c3rcs, ids_, items, true);
+        checkEveryPairProjected();
+        probe_ms_ = splat_.ms();
+        probe_points_ = last_.lod_points;
+        restrideByProjections(last_, splat_.seenPerItem(last_.items.size()), lod_density_);
+        items.count = last_.items.size();
+      }
+    }
+    splat_.run(frame, store_, last_.c3rcs, ids_, items);
     checkEveryPairProjected();
   }
 
@@ -315,8 +343,9 @@ class HybridMethod final : public Method {
   Culling culling_;
   bool first_only_, keep_backfaces_, eye_scaled_;
   int pixel_scale_, splat_size_, min_pixels_;
-  float lod_density_;
-  ProbeArray probes_;  // the background, one cube per reflector
+  float lod_density_;    // points with a projection a sub-pixel (0: every point)
+  float probe_density_;  // points the probe takes a sub-pixel
+  ProbeArray probes_;    // the background, one cube per reflector
   RecapturePolicy recapture_;
   SplatPass splat_;
   gpu::Program resolve_program_, id_program_, base_program_;
@@ -329,6 +358,8 @@ class HybridMethod final : public Method {
   std::unique_ptr<KdGpuCull> gpu_cull_;  // --hybrid-cull-on gpu
   KdGpuCullResult gpu_last_;
   double visibility_ms_ = 0.0;
+  double probe_ms_ = 0.0;
+  long long probe_points_ = 0;
 };
 
 }  // namespace
@@ -383,9 +414,10 @@ MethodEntry hybridMethodEntry() {
       ParamSpec::integer("hybrid-min-pixels", 0, 1000000, 1,
                          "reflector triangles with fewer visible pixels show the environment"),
       ParamSpec::text("hybrid-lod", "auto|0..1e6",
-                      "level of detail: project at most this many points per visible pixel of "
-                      "a reflector triangle (a uniform subsample with larger splats; 0: all; "
-                      "auto: 16 with --hybrid-cull-on cpu, all with gpu)",
+                      "level of detail: take the points of a reflector triangle's view volume so "
+                      "that about this many a visible pixel have a projection (a probe finds the "
+                      "fraction that does; a uniform subsample with larger splats; 0: all; "
+                      "auto: 8 with --hybrid-cull-on cpu, all with gpu)",
                       "auto"),
       envmapSizeParam()};
   for (ParamSpec& spec : probeRecaptureParams()) entry.info.params.push_back(std::move(spec));

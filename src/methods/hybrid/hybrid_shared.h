@@ -25,10 +25,13 @@
 #define MIRAGE_BIND_HYBRID_POINT_ATTRIBUTES 16  // PointAttributes[], the same order
 // uint[runs + 1]: the first work item of each run a workgroup projects, then the item count
 #define MIRAGE_BIND_HYBRID_RUNS 17
+// uint per work item: its taken points with a projection (the level of detail's probe)
+#define MIRAGE_BIND_HYBRID_ITEM_SEEN 18
 #define MIRAGE_HYBRID_COUNTERS 6
 #define MIRAGE_HYBRID_COUNTER_CANDIDATES 5
 #define MIRAGE_UNIT_HYBRID_DEPTH 4   // the frame's depth with the reflectors drawn
 #define MIRAGE_UNIT_HYBRID_PROBES 5  // samplerCubeArray: the background per reflector
+#define MIRAGE_UNIT_HYBRID_IDS 6     // usampler2D: the reflector triangle each pixel shows
 
 #define MIRAGE_HYBRID_GROUP 8            // invocations per run of items (see hybrid_splat.comp)
 #define MIRAGE_HYBRID_MAX_SPLAT 8        // the largest automatic splat side, in pixels
@@ -91,11 +94,35 @@ SHARED_FN uint hybrid_depth_key(float push_back) {
   return floatBitsToUint(max(push_back, 0.0f));
 }
 
-// Whether a splat that found `before` in its pixel's depth word (atomicMin's return) may be the
-// pixel's nearest: it is at least as near as every splat before it there. The nearest splats
-// (all those at the final minimum) always are, so the candidates they append hold the winner.
+// The front of a pixel: the splats whose push-back is within this fraction of the nearest's, the
+// same surface, among which the one landed nearest the pixel's centre wins (a nearest-neighbour
+// reconstruction in the image: sharper than whichever of the overlapping splats is nearest in
+// depth, once splats are as large as their neighbours' gaps).
+#define MIRAGE_HYBRID_FRONT_TOLERANCE 0.005f
+// A winner word: the quantised squared distance of the splat's landing from the pixel's centre
+// (output pixels², 1/32 steps, at most 1023) above the point's index (22 bits: 4,194,304 points).
+#define MIRAGE_HYBRID_INDEX_BITS 22
+#define MIRAGE_HYBRID_INDEX_MASK 0x3FFFFFu
+
+// Whether push-back `depth_key` is in the front of a pixel whose nearest is `nearest` (both
+// hybrid_depth_key; MIRAGE_HYBRID_EMPTY: no splat yet).
+SHARED_FN bool hybrid_in_front(uint depth_key, uint nearest) {
+  return nearest == MIRAGE_HYBRID_EMPTY ||
+         uintBitsToFloat(depth_key) <=
+             uintBitsToFloat(nearest) * (1.0f + MIRAGE_HYBRID_FRONT_TOLERANCE);
+}
+
+// Whether a splat that found `before` in its pixel's depth word (atomicMin's return) may be in
+// the pixel's final front: within the tolerance of every splat before it there. The final
+// nearest only lowers, so every splat of the final front appends itself as a candidate.
 SHARED_FN bool hybrid_is_candidate(uint before, uint depth_key) {
-  return depth_key <= before;
+  return hybrid_in_front(depth_key, before);
+}
+
+// The winner word of a candidate landed `distance2` output pixels² from the pixel's centre.
+SHARED_FN uint hybrid_winner_word(float distance2, uint index) {
+  uint d = uint(min(distance2 * 32.0f, 1023.0f));
+  return (d << MIRAGE_HYBRID_INDEX_BITS) | (index & MIRAGE_HYBRID_INDEX_MASK);
 }
 
 SHARED_END

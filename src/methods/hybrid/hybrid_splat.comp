@@ -2,8 +2,9 @@
 // leaf that survived a C3RC's culling is projected with that C3RC — all of its projections, or
 // the first only (--hybrid-projections first, the paper's one fragment per point) — and splatted
 // as an s×s square at the reflector point that sees it — or, with a level of detail, a uniform
-// stride through them with proportionally larger splats. Visibility: a splat behind the visible
-// reflector surface at its pixel is dropped (another part of the reflector hides it); the rest
+// stride through them with proportionally larger splats. Visibility: a splat on another
+// reflector's pixel (beside its own's silhouette) or behind the visible reflector surface at its
+// pixel is dropped (another part of the reflector hides it); the rest
 // keep the nearest push-back per pixel with one atomicMin on its float bits, and a splat at least
 // as near as the pixel's word was appends itself as a candidate for hybrid_winner.comp, which
 // picks the nearest's index (hybrid_shared.h).
@@ -29,21 +30,27 @@ layout(std430, binding = MIRAGE_BIND_HYBRID_COUNTERS) buffer CounterBlock { uint
 layout(std430, binding = MIRAGE_BIND_HYBRID_CANDIDATES) writeonly buffer CandidateBlock {
   uint candidates[];
 };
+layout(std430, binding = MIRAGE_BIND_HYBRID_ITEM_SEEN) buffer SeenBlock { uint item_seen[]; };
 layout(binding = MIRAGE_UNIT_HYBRID_DEPTH) uniform sampler2D u_depth;
+// The reflector triangle each pixel shows (instance + 1, primitive; triangle_id.frag).
+layout(binding = MIRAGE_UNIT_HYBRID_IDS) uniform usampler2D u_ids;
 
 uniform int u_run_count;
-uniform int u_run_base;      // the run of this dispatch's first workgroup
+uniform int u_run_base;  // the run of this dispatch's first workgroup
 // > 0: the items are on the GPU, no runs given: run r is slice r % u_slices of item r / u_slices,
 // u_slice_points of its points each.
 uniform int u_slices;
 uniform int u_slice_points;
-uniform int u_first_only;    // 1: the first projection only
-uniform int u_splat_size;    // s: an s×s square; 0: from the magnification
-uniform int u_pixel_scale;   // frame pixels per output pixel along a side (--ssaa)
+uniform int u_first_only;          // 1: the first projection only
+uniform int u_splat_size;          // s: an s×s square; 0: from the magnification
+uniform int u_pixel_scale;         // frame pixels per output pixel along a side (--ssaa)
 uniform int u_candidate_capacity;  // candidates beyond it are counted, not written
-uniform vec2 u_proj;         // the projection matrix's [2][2] and [3][2]: eye depth from z
-uniform float u_occlusion;   // relative depth tolerance of the occlusion test
-uniform int u_keep_backfaces;  // 1: project the back-facing points of closed objects too
+uniform vec2 u_proj;               // the projection matrix's [2][2] and [3][2]: eye depth from z
+uniform float u_occlusion;         // relative depth tolerance of the occlusion test
+uniform int u_keep_backfaces;      // 1: project the back-facing points of closed objects too
+// 1: count each item's points with a projection (item_seen) and splat nothing: the level of
+// detail's probe (splat_pass.h).
+uniform int u_count_only;
 
 // The eye depth the reflector pass left at a pixel.
 float surface_eye_depth(ivec2 pixel) {
@@ -76,21 +83,25 @@ uint splat(C3rcData c, vec4 proj, vec3 q, float spacing, uint index) {
   vec2 position = (ndc * 0.5f + 0.5f) * vec2(size);
   ivec2 first = ivec2(floor(position - 0.5f * float(side - 1)));
   uint key = hybrid_depth_key(length(q - base));
+  float per_output = 1.0f / float(u_pixel_scale * u_pixel_scale);
   uint written = 0u;
   // One loop over the block, not one a row: side^2 + 1 of the loop limiter's count, not
   // (side + 1)^2 (splat_pass.cpp, splatPointCost).
   for (int k = 0; k < side * side; ++k) {
     ivec2 pixel = first + ivec2(k % side, k / side);
     if (any(lessThan(pixel, ivec2(0))) || any(greaterThanEqual(pixel, size))) continue;
+    // Another reflector's pixel (beside this one's silhouette): its reflection is not this one's.
+    if (texelFetch(u_ids, pixel, 0).x != uint(c.counts.y)) continue;
     // Behind the visible reflector surface here: hidden by another part of the reflector.
     if (clip.w > surface_eye_depth(pixel) * (1.0f + u_occlusion)) continue;
     uint at = uint(pixel.y * size.x + pixel.x);
     if (hybrid_is_candidate(atomicMin(depths[at], key), key)) {
       uint slot = atomicAdd(counters[MIRAGE_HYBRID_COUNTER_CANDIDATES], 1u);
       if (slot < uint(u_candidate_capacity)) {
-        candidates[3u * slot] = at;
-        candidates[3u * slot + 1u] = key;
-        candidates[3u * slot + 2u] = index;
+        vec2 off = vec2(pixel) + 0.5f - position;
+        candidates[4u * slot] = at;
+        candidates[4u * slot + 1u] = key;
+        candidates[4u * slot + 2u] = hybrid_winner_word(dot(off, off) * per_output, index);
       }
     }
     ++written;
@@ -105,7 +116,7 @@ struct Counts {
 
 // This invocation's share (every MIRAGE_HYBRID_GROUP-th) of the points [begin, end) that one
 // work item takes.
-void project_item(ivec4 it, C3rcData c, int begin, int end, inout Counts counts) {
+void project_item(int item, ivec4 it, C3rcData c, int begin, int end, inout Counts counts) {
   // The level of detail: every stride-th point (leaves are in Morton order: a stratified
   // subsample), each standing for `stride` points, so its spacing grows by sqrt(stride).
   float stride = max(intBitsToFloat(it.w), 1.0f);
@@ -116,14 +127,15 @@ void project_item(ivec4 it, C3rcData c, int begin, int end, inout Counts counts)
   mat3 linear = mat3(model);
   mat3 normal_matrix = mat3(instances[instance].normal_matrix);
   bool cull_back = u_keep_backfaces == 0 && attributes[it.y].albedo.w > 0.5f;
+  uint seen = 0u;
   for (int i = begin + int(gl_LocalInvocationID.x); i < end; i += MIRAGE_HYBRID_GROUP) {
     uint index = uint(it.y + min(int(float(i) * stride), it.z - 1));
     vec4 position = positions[index], object_normal = attributes[index].normal;
     vec3 q = (model * vec4(position.xyz, 1.0f)).xyz;
     vec4 p0, p1, p2;
     int n = 0;
-    bool hidden = cull_back && hybrid_faces_away(normal_matrix * object_normal.xyz, q,
-                                                 vec3(c.v0), vec3(c.v1), vec3(c.v2));
+    bool hidden = cull_back && hybrid_faces_away(normal_matrix * object_normal.xyz, q, vec3(c.v0),
+                                                 vec3(c.v1), vec3(c.v2));
     if (!hidden) n = c3rc_project(c, q, 1.0e-4f, u_first_only != 0, p0, p1, p2);
     counts.facing_away += hidden ? 1u : 0u;
     ++counts.projected;
@@ -131,12 +143,15 @@ void project_item(ivec4 it, C3rcData c, int begin, int end, inout Counts counts)
     float spacing = 0.0f;
     if (n > 0 && u_splat_size == 0)
       spacing = hybrid_world_spacing(linear, object_normal.xyz, object_normal.w) * grown;
-    for (int k = 0; k < n; ++k) {
+    int splats = u_count_only != 0 ? 0 : n;
+    for (int k = 0; k < splats; ++k) {
       counts.written += splat(c, k == 0 ? p0 : (k == 1 ? p1 : p2), q, spacing, index);
     }
     counts.projections += uint(n);
-    counts.seen += n > 0 ? 1u : 0u;
+    seen += n > 0 ? 1u : 0u;
   }
+  counts.seen += seen;
+  if (u_count_only != 0 && seen > 0u) atomicAdd(item_seen[item], seen);
 }
 
 void main() {
@@ -165,7 +180,7 @@ void main() {
     int taken = hybrid_taken_points(it.z, max(intBitsToFloat(it.w), 1.0f));
     int begin = item == r.x ? r.y : 0;
     int end = item == r.z ? min(r.w, taken) : taken;
-    project_item(it, c, begin, end, counts);
+    project_item(item, it, c, begin, end, counts);
   }
   atomicAdd(counters[0], counts.projected);
   atomicAdd(counters[1], counts.projections);

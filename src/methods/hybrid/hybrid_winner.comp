@@ -1,7 +1,7 @@
 // The hybrid method's second visibility pass (hybrid_shared.h): each candidate that the
-// splatting pass appended at its pixel's final nearest depth writes its point index into the
-// pixel's winner word with atomicMin — the nearest point, ties to the lowest index, whatever the
-// order the splats ran in.
+// splatting pass appended in its pixel's final front (within MIRAGE_HYBRID_FRONT_TOLERANCE of the
+// final nearest push-back) writes its winner word with atomicMin — the splat landed nearest the
+// pixel's centre, ties to the lowest index, whatever the order the splats ran in.
 #include "methods/hybrid/hybrid_shared.h"
 
 layout(local_size_x = MIRAGE_HYBRID_WINNER_GROUP) in;
@@ -18,6 +18,7 @@ void main() {
   uint i = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * MIRAGE_HYBRID_WINNER_GROUP +
            gl_LocalInvocationID.x;
   if (i >= uint(u_candidate_count)) return;
-  uint pixel = candidates[3u * i];
-  if (depths[pixel] == candidates[3u * i + 1u]) atomicMin(winners[pixel], candidates[3u * i + 2u]);
+  uint pixel = candidates[4u * i];
+  if (hybrid_in_front(candidates[4u * i + 1u], depths[pixel]))
+    atomicMin(winners[pixel], candidates[4u * i + 2u]);
 }

@@ -7,11 +7,17 @@
 
 #include <tbb/parallel_for.h>
 
+#include "methods/hybrid/point_spacing.h"
 #include "shading/shading.h"
 
 namespace mirage {
 
 namespace {
+
+// Uniform candidates a stratified sample is chosen from, and the largest spacing a point may take
+// from its neighbourhood, in mean spacings.
+constexpr size_t kCandidatesPerSample = 2;
+constexpr float kMostSpacing = 4.0f;
 
 vec3 albedoAt(const Scene& scene, const Material& material, vec2 uv) {
   vec3 albedo = shading::material_albedo(material.gpuData(), uv);
@@ -85,6 +91,18 @@ void addSurfaceSamples(const Scene& scene, const Mesh& mesh, const Material& mat
   });
 }
 
+// `count` points stratified over the surface, appended after the `set.size()` already there
+// (its mesh vertices, which stay): kCandidatesPerSample times as many uniform samples, thinned
+// to a Poisson-disk set by sample elimination (point_spacing.h) on the object's `area`.
+void addStratifiedSamples(const Scene& scene, const Mesh& mesh, const Material& material,
+                          const std::vector<double>& cdf, size_t count, double area, uint32_t seed,
+                          PointSet& set) {
+  const size_t fixed = set.size();
+  addSurfaceSamples(scene, mesh, material, cdf, count * kCandidatesPerSample, seed, set);
+  const std::vector<uint32_t> kept = eliminateSamples(set.positions, fixed, fixed + count, area);
+  set.permute(kept);
+}
+
 template <typename T>
 void permuteVector(std::vector<T>& v, const std::vector<uint32_t>& order) {
   std::vector<T> out(order.size());
@@ -98,6 +116,7 @@ void PointSet::permute(const std::vector<uint32_t>& order) {
   permuteVector(positions, order);
   permuteVector(normals, order);
   permuteVector(albedo, order);
+  if (!spacings.empty()) permuteVector(spacings, order);
 }
 
 std::vector<int> pointSampledInstances(const Scene& scene) {
@@ -134,6 +153,8 @@ std::vector<PointSet> samplePoints(const Scene& scene, const std::vector<int>& i
     PointSet set;
     set.instance = instances[k];
     const double own = cdfs[k].empty() ? 0.0 : cdfs[k].back();
+    const std::vector<double> object = areaCdf(mesh, mat4(1.0f));
+    const double object_area = object.empty() ? 0.0 : object.back();
     if (total <= 0) {
       addVertices(scene, mesh, material, set);
     } else if (own > 0.0) {
@@ -148,12 +169,12 @@ std::vector<PointSet> samplePoints(const Scene& scene, const std::vector<int>& i
         addVertices(scene, mesh, material, set);
         samples -= set.size();
       }
-      addSurfaceSamples(scene, mesh, material, cdfs[k], samples, options.seed + uint32_t(k), set);
+      addStratifiedSamples(scene, mesh, material, cdfs[k], samples, object_area,
+                           options.seed + uint32_t(k), set);
     }
     if (set.size() > 0) {
-      const std::vector<double> object = areaCdf(mesh, mat4(1.0f));
-      const double object_area = object.empty() ? 0.0 : object.back();
       set.spacing = float(std::sqrt(object_area / double(set.size())));
+      set.spacings = neighbourSpacings(set.positions, set.spacing, kMostSpacing * set.spacing);
       // Scanned meshes keep a few small holes; through them one sees only a sliver of inside.
       const int mesh_index = scene.instances[size_t(instances[k])].mesh;
       auto [known, added] = closed_meshes.try_emplace(mesh_index, false);

@@ -30,9 +30,12 @@ struct PointSet {
   std::vector<vec3> positions;
   std::vector<vec3> normals;  // unit
   std::vector<vec3> albedo;   // linear, texture and checker applied
-  size_t vertex_points = 0;   // how many are mesh vertices (the rest are surface samples)
-  float spacing = 0.0f;       // the mean distance between neighbours: sqrt(area / count)
-  bool closed = false;        // the mesh is a closed surface: its back-facing points are hidden
+  // Each point's spacing: the distance to its kSpacingNeighbours-th nearest neighbour
+  // (point_spacing.h), what its splat must span to reach its neighbours.
+  std::vector<float> spacings;
+  size_t vertex_points = 0;  // how many are mesh vertices (the rest are surface samples)
+  float spacing = 0.0f;      // the mean distance between neighbours: sqrt(area / count)
+  bool closed = false;       // the mesh is a closed surface: its back-facing points are hidden
 
   size_t size() const { return positions.size(); }
   // Reorders every attribute: new[i] = old[order[i]].

@@ -45,7 +45,7 @@ void PointStore::bind(GLuint positions, GLuint attributes) {
     for (const PointCloud& c : clouds_)
       for (size_t i = 0; i < c.points.size(); ++i) {
         where.push_back(vec4(c.points.positions[i], float(c.points.instance)));
-        what.push_back({vec4(c.points.normals[i], c.points.spacing),
+        what.push_back({vec4(c.points.normals[i], c.points.spacings[i]),
                         vec4(c.points.albedo[i], c.points.closed ? 1.0f : 0.0f)});
       }
     if (where.empty()) {

@@ -61,8 +61,15 @@ void SplatPass::dispatch(size_t run_count) {
   }
 }
 
+std::vector<uint32_t> SplatPass::seenPerItem(size_t items) const {
+  std::vector<uint32_t> seen(items, 0u);
+  if (items > 0 && seen_buffer_.size() >= items * sizeof(uint32_t))
+    seen_buffer_.download(seen.data(), items * sizeof(uint32_t));
+  return seen;
+}
+
 void SplatPass::run(FrameContext& frame, PointStore& store, const std::vector<C3rcData>& c3rcs,
-                    const SplatItems& items) {
+                    const gpu::Texture& reflector_ids, const SplatItems& items, bool count_only) {
   const ivec2 size = frame.target.size();
   visibility_.begin(size_t(size.x) * size_t(size.y));
   if (counter_buffer_.size() == 0) counter_buffer_ = gpu::Buffer(sizeof(counters_));
@@ -72,12 +79,18 @@ void SplatPass::run(FrameContext& frame, PointStore& store, const std::vector<C3
   if (items.count == 0) return;
 
   c3rc_buffer_.upload(std::span<const C3rcData>(c3rcs));
+  if (seen_buffer_.size() < std::max<size_t>(items.count, 1) * sizeof(uint32_t))
+    seen_buffer_ = gpu::Buffer(std::max<size_t>(items.count, 1) * sizeof(uint32_t));
+  if (count_only) SplatVisibility::clearWords(seen_buffer_, 0u);
+  seen_buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_ITEM_SEEN);
+  program_.set("u_count_only", count_only ? 1 : 0);
   if (items.cpu) item_buffer_.upload(std::span<const ivec4>(*items.cpu));
   c3rc_buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_C3RCS);
   (items.cpu ? item_buffer_ : *items.gpu)
       .bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_ITEMS);
   counter_buffer_.bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_HYBRID_COUNTERS);
   frame.target.depth().bind(MIRAGE_UNIT_HYBRID_DEPTH);
+  reflector_ids.bind(MIRAGE_UNIT_HYBRID_IDS);
   size_t run_count = 0;
   if (items.cpu) {
     const std::vector<SplatRun> item_runs = runs(items);
@@ -115,7 +128,7 @@ void SplatPass::run(FrameContext& frame, PointStore& store, const std::vector<C3
     counter_buffer_.download(counters_, sizeof(counters_));
     candidates = counters_[MIRAGE_HYBRID_COUNTER_CANDIDATES];
   } while (!visibility_.fitted(candidates));
-  visibility_.pickWinners(candidates);
+  if (!count_only) visibility_.pickWinners(candidates);
   if (timing) {
     glFinish();
     ms_ = watch.ms();

@@ -39,9 +39,15 @@ class SplatPass {
   explicit SplatPass(const SplatSettings& settings);
 
   // Splats `items` (C3RCs `c3rcs`, world space) into the frame's visibility words; the resolve
-  // pass reads the winners. Times itself when the frame is timed.
+  // pass reads the winners. `reflector_ids`: the frame's triangle-ID image (instance + 1,
+  // primitive), where a splat lands only on its own reflector's pixels. Times itself when the
+  // frame is timed.
+  // With `count_only`, splats nothing and counts each item's taken points with a projection
+  // (seenPerItem): the level of detail's probe.
   void run(FrameContext& frame, PointStore& store, const std::vector<C3rcData>& c3rcs,
-           const SplatItems& items);
+           const gpu::Texture& reflector_ids, const SplatItems& items, bool count_only = false);
+  // The counts of the last count-only run, one per item (waits for it).
+  std::vector<uint32_t> seenPerItem(size_t items) const;
 
   // The shader's counters of the last run (MIRAGE_HYBRID_COUNTERS: pairs given, projections,
   // splats, pairs projecting, pairs facing away, candidates).
@@ -66,7 +72,7 @@ class SplatPass {
   gpu::Program program_;
   size_t run_items_;  // the most work items a run takes
   SplatVisibility visibility_;
-  gpu::Buffer c3rc_buffer_, item_buffer_, run_buffer_, counter_buffer_;
+  gpu::Buffer c3rc_buffer_, item_buffer_, run_buffer_, counter_buffer_, seen_buffer_;
   uint32_t counters_[MIRAGE_HYBRID_COUNTERS] = {};
   double ms_ = 0.0;
 };

@@ -9,7 +9,8 @@ namespace mirage {
 
 namespace {
 
-constexpr size_t kRecord = 3 * sizeof(uint32_t);  // pixel, depth key, point index
+// Pixel, depth key, winner word (hybrid_winner_word), and a word to keep records 16 bytes.
+constexpr size_t kRecord = 4 * sizeof(uint32_t);
 
 // Bytes for `count` candidates, within the driver's largest storage block.
 size_t candidateBytes(size_t count) {
