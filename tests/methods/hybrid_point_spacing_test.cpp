@@ -88,8 +88,8 @@ TEST(HybridPointSpacing, SampleEliminationKeepsTheFixedAndSpreadsTheRest) {
   // uniform samples of the same count come far closer (0.03).
   const float r_max = std::sqrt(1.0f / (2.0f * std::sqrt(3.0f) * float(target)));
   std::vector<vec3> free_chosen(chosen.begin() + long(fixed), chosen.end());
-  std::printf("closest pair: eliminated %.4f, uniform %.4f, r_max %.4f\n",
-              closestPair(free_chosen), closestPair(random), r_max);
+  std::printf("closest pair: eliminated %.4f, uniform %.4f, r_max %.4f\n", closestPair(free_chosen),
+              closestPair(random), r_max);
   EXPECT_GT(closestPair(free_chosen), 0.8f * r_max);
   EXPECT_LT(closestPair(random), 0.1f * r_max);
 }
