@@ -59,6 +59,10 @@ class CheckDocsFigures(unittest.TestCase):
         self.assertEqual(code, 1, out)
         self.assertIn("'2.3 x'", out)
 
+    def test_a_figure_a_named_test_prints_passes(self):
+        code, out = run(GOOD + "\n`Srdm.AgreesWithMarching` agrees on 99.3 % of the rays.\n")
+        self.assertEqual(code, 0, out)
+
     def test_a_set_without_a_recorded_commit_fails(self):
         code, out = run(GOOD, commit=None)
         self.assertEqual(code, 1, out)

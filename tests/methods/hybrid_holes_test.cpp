@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <utility>
 
 #include "core/first_hit.h"
 #include "methods/frame.h"
@@ -20,6 +21,19 @@ namespace {
 
 class HybridHoles : public GlTest {};
 
+// hybrid's frame of the scene at order 1 and the ray tracer's first hits of its reflected rays.
+std::pair<RenderedFrame, IdImage> hybridFrameAndFirstHits(const Scene& scene, ivec2 size) {
+  FrameSettings settings;
+  settings.order = 1;
+  FrameRenderer renderer(scene, size);
+  auto m = renderer.createMethod("hybrid", {}, settings);
+  const View view(scene.camera(), size);
+  renderer.render(*m, view, 0.0f, settings);
+  RayTracer tracer(scene, renderer.environment());
+  tracer.prepare(0.0f);
+  return {renderer.read(), tracer.firstHits(view, 1)};
+}
+
 // concave-dish with its ball pure green: a pixel whose reflected ray meets the ball (the ray
 // tracer's first hits) and that shows no green splat shows the background cube map (the sky and
 // the dish), whose blue a splat of the ball has not.
@@ -30,16 +44,7 @@ TEST_F(HybridHoles, AMagnifiedBallIsCoveredByItsSplats) {
   scene.materials[size_t(scene.instances[size_t(ball)].material)] =
       Material::diffuse("green", {0.0f, 0.9f, 0.0f});
   const ivec2 size{320, 240};
-  FrameSettings settings;
-  settings.order = 1;
-  FrameRenderer renderer(scene, size);
-  auto m = renderer.createMethod("hybrid", {}, settings);
-  const View view(scene.camera(), size);
-  renderer.render(*m, view, 0.0f, settings);
-  const RenderedFrame frame = renderer.read();
-  RayTracer tracer(scene, renderer.environment());
-  tracer.prepare(0.0f);
-  const IdImage hits = tracer.firstHits(view, 1);
+  const auto [frame, hits] = hybridFrameAndFirstHits(scene, size);
   size_t ball_pixels = 0, empty = 0;
   Image holes(size.x, size.y, vec4(0.0f, 0.0f, 0.0f, 1.0f));
   for (int y = 0; y < size.y; ++y)
@@ -85,16 +90,7 @@ TEST_F(HybridHoles, NoSplatOfANearerReflectorWinsBesideItsSilhouette) {
   const Scene scene = overlappingMirrorsBeforeAWall();
   const int slab = instanceNamed(scene, "slab");
   const ivec2 size{400, 300};
-  FrameSettings settings;
-  settings.order = 1;
-  FrameRenderer renderer(scene, size);
-  auto m = renderer.createMethod("hybrid", {}, settings);
-  const View view(scene.camera(), size);
-  renderer.render(*m, view, 0.0f, settings);
-  const RenderedFrame frame = renderer.read();
-  RayTracer tracer(scene, renderer.environment());
-  tracer.prepare(0.0f);
-  const IdImage hits = tracer.firstHits(view, 1);
+  const auto [frame, hits] = hybridFrameAndFirstHits(scene, size);
   // The near sphere's ID: the first reflector pixel from the left on the middle row (both
   // centres lie on the eye's level, the near one to the left).
   uint32_t near_id = 0;
