@@ -59,6 +59,14 @@ class CheckDocsFigures(unittest.TestCase):
         self.assertEqual(code, 1, out)
         self.assertIn("'2.3 x'", out)
 
+    def test_a_stale_score_fails_and_a_quoted_one_passes(self):
+        table = "\n| method | SSIM |\n| --- | ---: |\n| `envmap` | 0.917 |\n"
+        code, out = run(GOOD + table + "\nIts SSIM reads 0.917 on the mirror.\n")
+        self.assertEqual(code, 0, out)
+        code, out = run(GOOD + table + "\nIts SSIM reads 0.880 on the mirror.\n")
+        self.assertEqual(code, 1, out)
+        self.assertIn("'0.880 SSIM'", out)
+
     def test_a_figure_a_named_test_prints_passes(self):
         code, out = run(GOOD + "\n`Srdm.AgreesWithMarching` agrees on 99.3 % of the rays.\n")
         self.assertEqual(code, 0, out)

@@ -338,7 +338,7 @@ MethodEntry zexelMethodEntry() {
                          "in the mirror room, up to 64 in the hall)"),
       ParamSpec::integer("zexel-maps-per-frame", 1, 2, 2,
                          "maps warped per mirror and frame, the nearest the mirrored eye"),
-      ParamSpec::real("zexel-cone", 0.0, 85.0, 60.0,
+      ParamSpec::real("zexel-cone", 0.0, 85.0, kDefaultZexelCone,
                       "spread of the reference cameras from the mirror's axis, in degrees"),
       ParamSpec::real("zexel-fov", 10.0, 170.0, 100.0,
                       "vertical field of view of each reference camera, in degrees"),
