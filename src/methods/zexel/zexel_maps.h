@@ -19,9 +19,10 @@
 
 namespace mirage {
 
-// The reference cameras' default spread from the mirror's axis, degrees: along mirror-room's
-// and mirror-hall's walks every measure improved from 20° to 80° (views from the side find
-// their maps; docs/zexel-results.md, the hemisphere); 85° is the parameter's limit.
+// The reference cameras' default spread from the mirror's axis, degrees: with 8 maps along
+// mirror-room's walk every measure improved from 20° to 80° (views from the side find their
+// maps; docs/zexel-results.md, the hemisphere), as mirror-hall's 64 maps did from 60° to 80°;
+// 85° is the parameter's limit.
 inline constexpr float kDefaultZexelCone = 80.0f;
 
 struct ZexelMapOptions {
