@@ -1,18 +1,57 @@
 // `mirage scenes`: the scenes that can be rendered now, one a line on stdout; asset scenes not
-// fetched yet go to stderr with the command that fetches them.
+// fetched yet go to stderr with the command that fetches them. Given scene names (or files), it
+// loads them and lists their instances with each one's layer (scene/layers.h) instead.
+#include <algorithm>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "app/commands.h"
+#include "scene/layers.h"
 #include "scene/scene_loader.h"
 
 namespace mirage::app {
 
+namespace {
+
+// One scene's instances: name, layer and why, triangles, and the planar parts of the
+// environment's instances; -v adds the description.
+void printInstances(const std::string& spec, bool verbose) {
+  const Scene scene = loadScene(spec);
+  const SceneLayers layers = sceneLayers(scene);
+  std::printf("%s: %zu instances, %zu triangles\n", scene.name.c_str(), scene.instances.size(),
+              scene.triangleCount());
+  if (verbose && !scene.description.empty()) std::printf("  %s\n", scene.description.c_str());
+  std::printf("  %-28s %-11s %9s %6s  %s\n", "instance", "layer", "triangles", "planes", "why");
+  for (int i = 0; i < int(scene.instances.size()); ++i) {
+    const Instance& instance = scene.instances[size_t(i)];
+    const bool environment = layers.environment(i);
+    const std::string planes =
+        environment ? std::to_string(layers.planesOf(i).size()) : std::string("-");
+    const bool rest = std::find(layers.rest.begin(), layers.rest.end(), i) != layers.rest.end();
+    std::printf("  %-28s %-11s %9zu %6s  %s%s\n", instance.name.c_str(), layers.name(i),
+                scene.meshes[size_t(instance.mesh)].triangleCount(), planes.c_str(),
+                layers.instances[size_t(i)].why.c_str(),
+                environment && rest ? "; the rest through probes" : "");
+  }
+}
+
+}  // namespace
+
 Command addScenesCommand(CLI::App& parent) {
   Command cmd;
-  cmd.app = parent.add_subcommand("scenes", "list the scenes that can be rendered");
+  cmd.app = parent.add_subcommand(
+      "scenes", "list the scenes that can be rendered, or the instances and layers of some");
   auto verbose = std::make_shared<bool>(false);
+  auto names = std::make_shared<std::vector<std::string>>();
   cmd.app->add_flag("-v,--verbose", *verbose, "also print each scene's description");
-  cmd.run = [verbose] {
+  cmd.app->add_option("scenes", *names,
+                      "scenes (names or files) whose instances and layers to list");
+  cmd.run = [verbose, names] {
+    if (!names->empty()) {
+      for (const std::string& name : *names) printInstances(name, *verbose);
+      return 0;
+    }
     for (const SceneListing& s : listScenes()) {
       if (s.available) {
         if (*verbose)

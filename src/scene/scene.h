@@ -12,6 +12,7 @@
 #include "core/image.h"
 #include "scene/animation.h"
 #include "scene/deformation.h"
+#include "scene/layers.h"
 #include "scene/material.h"
 #include "scene/mesh.h"
 
@@ -64,6 +65,8 @@ struct Instance {
   // A procedural deformation of the mesh over time (reflectors only; the mesh is this
   // instance's own).
   Deformation deformation;
+  // The layer its scene file gives it (scene/layers.h); none: the default rule decides.
+  std::optional<Layer> layer;
 
   bool deforms() const { return deformation.active(); }
 

@@ -270,6 +270,21 @@ bool needsUvs(const Material& m) {
   return m.albedo_texture >= 0 || m.checker_scale > 0.0f || m.normal_map >= 0;
 }
 
+// The instance's "layer" (scene/layers.h), if given: diffuse instances only.
+std::optional<Layer> parseLayer(const Field& instance, const Material& material) {
+  const std::optional<Field> f = instance.optional("layer");
+  if (!f) return std::nullopt;
+  const std::string text = f->string();
+  const std::optional<Layer> layer = findChoice<Layer>(kLayers, text);
+  if (!layer)
+    f->fail("= {}: unknown layer (allowed: {})", shortQuote(text), choiceNames<Layer>(kLayers));
+  if (material.isReflector())
+    f->fail("applies to diffuse instances only; material {} is a reflector (reflectors are in no "
+            "layer)",
+            shortQuote(material.name));
+  return layer;
+}
+
 void addInstance(Context& ctx, const Field& at, std::string name, int mesh, int material,
                  const Transform& t, const Animation& a, const Deformation& deformation) {
   Scene& s = ctx.scene;
@@ -298,6 +313,7 @@ void addInstance(Context& ctx, const Field& at, std::string name, int mesh, int 
   inst.transform = t;
   inst.animation = a;
   inst.deformation = deformation;
+  inst.layer = parseLayer(at, mat);
   s.instances.push_back(std::move(inst));
 }
 
@@ -362,7 +378,7 @@ void parseInstances(Context& ctx, const Field& root) {
   for (size_t i = 0; i < items.size(); ++i) {
     const Field& f = items[i];
     f.allowKeys({"name", "mesh", "material", "model", "material_override", "translate", "rotate",
-                 "scale", "animation", "deform"},
+                 "scale", "animation", "deform", "layer"},
                 "an instance");
     Transform t = parseTransform(f, {});
     Animation a;

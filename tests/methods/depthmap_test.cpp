@@ -151,7 +151,7 @@ TEST(DepthMapGeometry, LinearWalkFindsTheFrontOfATracedSphere) {
   Scene scene;
   scene.meshes.push_back(procedural::sphere(1.0f, 96, 48));
   scene.materials.push_back(Material::diffuse("grey", vec3(0.5f)));
-  scene.instances.push_back({"sphere", 0, 0, {}, {}, {}});
+  scene.instances.push_back({"sphere", 0, 0, {}, {}, {}, {}});
   const View view = depthCamera(vec3(0.0f), 1.0f, vec3(0.0f, 0.0f, 1.0f), 20.0f, 128);
   const DepthMap map = traceDepthMap(scene, 0, 0.0f, view);
   sh::g_marched = &map;
@@ -208,7 +208,7 @@ TEST(DepthMapSet, ARayMissingTheBestAlignedMapFallsBackToTheNext) {
   Scene scene;
   scene.meshes.push_back(procedural::sphere(1.0f, 96, 48));
   scene.materials.push_back(Material::diffuse("grey", vec3(0.5f)));
-  scene.instances.push_back({"sphere", 0, 0, {}, {}, {}});
+  scene.instances.push_back({"sphere", 0, 0, {}, {}, {}, {}});
   std::vector<sh::TestMap> maps;
   for (vec3 from : {vec3(0, 0, 1), vec3(0, 0, -1)}) {
     const View view = depthCamera(vec3(0.0f), 1.0f, from, 20.0f, 128);

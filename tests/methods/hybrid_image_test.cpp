@@ -39,6 +39,26 @@ TEST_F(HybridImages, ReflectsNearbyObjectsBetterThanEnvironmentMaps) {
   EXPECT_GT(reflectorPsnr(hybrid), reflectorPsnr(envmap) + 10.0);
 }
 
+TEST_F(HybridImages, TheEnvironmentShowsWithItsParallaxAsEnvmapBoxShowsIt) {
+  // A mirror sphere over a checkered floor and nothing else: the floor is the environment layer
+  // (scene/layers.h), never points, and hybrid shows it through its background probe looked up
+  // through the box proxy of what the probe shows — envmap-box's probe and proxy exactly, so the
+  // same frame but for float rounding. (Before the layers' proxy, hybrid looked its background
+  // up by direction alone, as `envmap`.)
+  const Scene scene = spheresOverFloor(/*floor_only=*/true);
+  FrameSettings settings;
+  settings.order = 1;
+  const ivec2 size{240, 180};
+  RenderPair hybrid = renderWithTruth(scene, "hybrid", size, settings, {}, 0.0f, kMatchedSsaa);
+  RenderPair box = renderWithTruth(scene, "envmap-box", size, settings, {}, 0.0f, kMatchedSsaa);
+  EXPECT_EQ(hybrid.stats.at("points"), 0.0);  // the floor is not point-sampled
+  std::printf("floor reflector PSNR: hybrid %.2f dB, envmap-box %.2f dB\n", reflectorPsnr(hybrid),
+              reflectorPsnr(box));
+  EXPECT_TRUE(imagesEqual(hybrid.gpu, box.gpu, kFloatRounding, nullptr, "hybrid-vs-envmap-box"));
+  EXPECT_TRUE(psnrAtLeast(hybrid.gpu, hybrid.cpu, floors::kHybridFloorThroughTheBox,
+                          &hybrid.cpu_ids));
+}
+
 Image renderWith(FrameRenderer& renderer, const Scene& scene, ivec2 size,
                  const std::map<std::string, std::string>& params, float time = 0.0f,
                  std::map<std::string, double>* stats = nullptr) {

@@ -236,7 +236,7 @@ TEST(HybridC3rcFrame, DegenerateReflectorTrianglesAreSkippedAndCounted) {
   mesh.normals[5] = vec3(std::nanf(""), 0, 0);
   scene.meshes.push_back(mesh);
   scene.materials.push_back(Material::mirror("m"));
-  scene.instances.push_back({"mirror", 0, 0, {}, {}, {}});
+  scene.instances.push_back({"mirror", 0, 0, {}, {}, {}, {}});
   const std::vector<PointSet> none;
   const PointStore store(scene, {}, {});
   const std::vector<std::vector<uint32_t>> pixels = {{10, 10, 10}};

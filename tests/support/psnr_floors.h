@@ -41,6 +41,8 @@ inline constexpr PsnrFloor kEnvmapInfiniteReflector{"envmap-infinite-reflector",
 inline constexpr PsnrFloor kEnvmapInfiniteAll{"envmap-infinite-all", 44.0, 46.86};
 inline constexpr PsnrFloor kNoneVsOrder0{"none-vs-order0", 57.5, 60.33};
 inline constexpr PsnrFloor kEnvmapBoxInBoxRoom{"envmap-box-reflector", 31.0, 33.60};
+// A floor alone under a mirror sphere, hybrid's background through the box proxy, under 2x2.
+inline constexpr PsnrFloor kHybridFloorThroughTheBox{"hybrid-floor-through-the-box", 29.5, 32.07};
 inline constexpr PsnrFloor kHybridSkyOnly{"hybrid-sky-only", 35.0, 35.61};
 inline constexpr PsnrFloor kSsrFallbackIsEnvmapBox{"ssr-fallback-is-envmap-box", 74.0, 76.97};
 // One method's captures kept by a policy against the same captures made afresh.
@@ -54,6 +56,8 @@ inline constexpr PsnrFloor kEnvmapSphereOverChecker{"envmap-reflector", 11.0, 12
 inline constexpr PsnrFloor kBillboardFloor{"billboard-floor-reflector", 41.0, 43.60};
 inline constexpr PsnrFloor kBillboardGroupsBesideAReflector{"billboard-groups-beside-a-reflector",
                                                             27.5, 30.31};
+// A room of one mesh in the environment layer, its walls planar billboards, under 2x2.
+inline constexpr PsnrFloor kImpostorRoomOfOneMesh{"impostor-room-of-one-mesh", 26.5, 29.02};
 inline constexpr PsnrFloor kBillboardSpheres9{"billboard-spheres9-reflector", 20.0, 22.36};
 inline constexpr PsnrFloor kHybridObjects{"hybrid-objects", 31.0, 33.44};
 inline constexpr PsnrFloor kHybridMovedVsTruth{"hybrid-moved-vs-truth", 26.0, 28.72};
@@ -77,6 +81,7 @@ inline constexpr const PsnrFloor* kAll[] = {
     &kNoneVsOrder0,
     &kEnvmapBoxInBoxRoom,
     &kHybridSkyOnly,
+    &kHybridFloorThroughTheBox,
     &kSsrFallbackIsEnvmapBox,
     &kRecaptureCaughtUp,
     &kRecaptureCarriedSpin,
@@ -84,6 +89,7 @@ inline constexpr const PsnrFloor* kAll[] = {
     &kEnvmapSphereOverChecker,
     &kBillboardFloor,
     &kBillboardSpheres9,
+    &kImpostorRoomOfOneMesh,
     &kBillboardGroupsBesideAReflector,
     &kHybridObjects,
     &kHybridMovedVsTruth,

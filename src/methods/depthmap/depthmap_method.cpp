@@ -82,6 +82,7 @@ Grouping depthMapGroups(const MethodSetup& setup, const DepthMapOptions& options
   // captures' textures) takes its bytes from the same --impostor-memory.
   const std::vector<int> objects = depthMappedObjects(scene);
   stage.set.excluded = objects;
+  stage.set.layers = sceneLayers(scene);
   GroupCost cost = depthMapCost(scene, options, srdm);
   cost.fixed_bytes += billboardStageCost(scene, stage).fixed_bytes;
   return chooseGroups(scene, objects, stage.groups, cost, impostorGroupCaps(stage), "depth maps",

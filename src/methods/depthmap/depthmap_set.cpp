@@ -71,9 +71,10 @@ void placeMaps(const Scene& scene, int i, const std::vector<int>& members, const
 }  // namespace
 
 std::vector<int> depthMappedObjects(const Scene& scene) {
+  const SceneLayers layers = sceneLayers(scene);
   std::vector<int> objects;
   for (int i = 0; i < int(scene.instances.size()); ++i)
-    if (!scene.isReflector(i) &&
+    if (!scene.isReflector(i) && !layers.environment(i) &&
         !isPlanarInstance(scene, i, scene.instances[size_t(i)].matrixAt(0.0f)))
       objects.push_back(i);
   return objects;

@@ -40,7 +40,8 @@ struct DepthMapSpec {
   float radius = 1.0f;
 };
 
-// The non-planar diffuse instances: the objects depth maps stand for.
+// The non-planar diffuse instances of the object layer (scene/layers.h): the objects depth maps
+// stand for.
 std::vector<int> depthMappedObjects(const Scene& scene);
 
 // The groups of depth-mapped objects (impostor_groups.h: each list's first member stands for

@@ -1,8 +1,11 @@
 // Method `hybrid`: the reflector pass after the splats (the hybrid paper, §6–7). A pixel that a
 // point reached shows that point, shaded with the shared diffuse model at its current place;
 // any other pixel shows the background: the reflector's cube map of the scene without the
-// point-sampled objects. Fresnel and distance attenuation come from the shared reflector main.
+// point-sampled objects, looked up through the box proxy of what it shows (PROBE_BOX: the
+// environment's parallax, as `envmap-box`). Fresnel and distance attenuation come from the
+// shared reflector main.
 #include "render/shaders/reflector.glsl"
+#include "render/shaders/probe_lookup.glsl"
 #include "methods/hybrid/hybrid_shared.h"
 
 layout(std430, binding = MIRAGE_BIND_HYBRID_POINTS) readonly buffer PointBlock {
@@ -14,7 +17,6 @@ layout(std430, binding = MIRAGE_BIND_HYBRID_POINT_ATTRIBUTES) readonly buffer At
 layout(std430, binding = MIRAGE_BIND_HYBRID_WINNERS) readonly buffer WinnerBlock {
   uint winners[];
 };
-layout(binding = MIRAGE_UNIT_HYBRID_PROBES) uniform samplerCubeArray u_probes;
 
 vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflector) {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -30,5 +32,5 @@ vec4 reflected_radiance(vec3 position, vec3 direction, vec3 normal, int reflecto
                                frame.ambient.rgb);
     return vec4(color, length(q - position));
   }
-  return probe_radiance(u_probes, direction, float(reflector - 1), g_dRdx, g_dRdy);
+  return probe_lookup(position, direction, reflector, g_dRdx, g_dRdy);
 }

@@ -17,6 +17,7 @@
 #include "render/base_colour.h"
 #include "render/depth_state.h"
 #include "render/probe_array.h"
+#include "render/probe_lookup.h"
 
 namespace mirage {
 
@@ -104,8 +105,9 @@ class HybridMethod final : public Method {
         probes_(setup.params.integer("envmap-size")),
         recapture_(probeRecapture(setup.params)),
         splat_({first_only_, keep_backfaces_, splat_size_, pixel_scale_}),
-        resolve_program_(
-            gpu::Program::graphics("render/shaders/scene.vert", "methods/hybrid/hybrid.frag")),
+        resolve_program_(gpu::Program::graphics("render/shaders/scene.vert",
+                                                "methods/hybrid/hybrid.frag",
+                                                backgroundLookup().defines())),
         id_program_(
             gpu::Program::graphics("render/shaders/scene.vert", "methods/hybrid/triangle_id.frag")),
         base_program_(baseColourProgram()) {
@@ -158,7 +160,7 @@ class HybridMethod final : public Method {
           gpu_cull_->run(last_.c3rcs, frame.gpu.instanceMatrices(), culling_, !keep_backfaces_);
     splat(frame);
 
-    probes_.bind(MIRAGE_UNIT_HYBRID_PROBES);
+    bindBackground(frame);
     DepthState visible(GL_LEQUAL, true);  // the visibility pass left the reflectors' depth
     frame.drawOwnReflectors(resolve_program_);
   }
@@ -238,6 +240,31 @@ class HybridMethod final : public Method {
     for (const PointCloud& c : store_.clouds())
       b.extend(frame.gpu.instanceBounds(c.points.instance));
     return std::max(2.0f * b.radius(), 1e-3f);
+  }
+
+  // How the resolve pass looks the background up: through the box proxy of what it shows.
+  static ProbeLookup backgroundLookup() {
+    ProbeLookup lookup;
+    lookup.box = true;
+    return lookup;
+  }
+
+  // Binds the background for the resolve pass: the probes, where each was captured, and the
+  // proxy — the bounds of what they show (the environment, the objects without points), grown
+  // to hold every probe centre, as `envmap-box`'s.
+  void bindBackground(FrameContext& frame) {
+    ProbeLookup lookup = backgroundLookup();
+    lookup.probes = &probes_;
+    lookup.centres = &centres_;
+    std::vector<vec4> centres;
+    for (int i : background_) lookup.proxy.extend(frame.gpu.instanceBounds(i));
+    for (size_t r = 0; r < reflectors_.size(); ++r) {
+      const vec3 c = probes_.centre(int(r), frame.gpu.instanceBounds(reflectors_[r]).center());
+      centres.push_back(vec4(c, 1.0f));
+      lookup.proxy.extend(c);
+    }
+    centres_.upload(std::span<const vec4>(centres));
+    lookup.bind(resolve_program_);
   }
 
   // The background every reflector shows where no point lands: a cube map at its centre of
@@ -346,6 +373,7 @@ class HybridMethod final : public Method {
   float lod_density_;    // points with a projection a sub-pixel (0: every point)
   float probe_density_;  // points the probe takes a sub-pixel
   ProbeArray probes_;    // the background, one cube per reflector
+  gpu::Buffer centres_;  // vec4 per reflector: where its background probe was captured
   RecapturePolicy recapture_;
   SplatPass splat_;
   gpu::Program resolve_program_, id_program_, base_program_;

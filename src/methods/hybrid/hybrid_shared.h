@@ -30,7 +30,6 @@
 #define MIRAGE_HYBRID_COUNTERS 6
 #define MIRAGE_HYBRID_COUNTER_CANDIDATES 5
 #define MIRAGE_UNIT_HYBRID_DEPTH 4   // the frame's depth with the reflectors drawn
-#define MIRAGE_UNIT_HYBRID_PROBES 5  // samplerCubeArray: the background per reflector
 #define MIRAGE_UNIT_HYBRID_IDS 6     // usampler2D: the reflector triangle each pixel shows
 
 #define MIRAGE_HYBRID_GROUP 8            // invocations per run of items (see hybrid_splat.comp)

@@ -120,9 +120,12 @@ void PointSet::permute(const std::vector<uint32_t>& order) {
 }
 
 std::vector<int> pointSampledInstances(const Scene& scene) {
+  const SceneLayers layers = sceneLayers(scene);
   std::vector<int> out;
   for (int i = 0; i < int(scene.instances.size()); ++i)
-    if (!scene.isReflector(i) && !isPlanarInstance(scene, i, mat4(1.0f))) out.push_back(i);
+    if (!scene.isReflector(i) && !layers.environment(i) &&
+        !isPlanarInstance(scene, i, mat4(1.0f)))
+      out.push_back(i);
   return out;
 }
 

@@ -42,8 +42,9 @@ struct PointSet {
   void permute(const std::vector<uint32_t>& order);
 };
 
-// The instances the hybrid method reflects as points: diffuse and not planar (planar ones — the
-// floor, walls — stay in the environment the points are splatted over).
+// The instances the hybrid method reflects as points: the object layer's (scene/layers.h) that
+// are not planar. The environment layer (a room, a floor) and planar objects stay in the
+// background the points are splatted over.
 std::vector<int> pointSampledInstances(const Scene& scene);
 
 // The point sets of `instances` (empty sets are dropped).

@@ -165,15 +165,46 @@ BillboardSpec planarBillboard(const Scene& scene, int i, float time,
   return b;
 }
 
+// An environment instance's planar part (in its object space) as a billboard: a square in its
+// plane holding its rectangle, captured head-on from the side its triangles face, through a
+// slab so thin around the plane that the rest of the instance is not in it.
+BillboardSpec planarPartBillboard(const Scene& scene, const EnvironmentPlane& plane, float time,
+                                  float fov) {
+  const mat4 m = scene.instances[size_t(plane.instance)].matrixAt(time);
+  const PlanarPart& part = plane.part;
+  const vec3 corner = transformPoint(m, part.corner);
+  const vec3 u = mat3(m) * part.edge_u, v = mat3(m) * part.edge_v;
+  const vec3 n = glm::normalize(normalMatrix(m) * part.normal);
+  const vec3 centre = corner + 0.5f * (u + v);
+  const float half = 0.5f * std::max({glm::length(u), glm::length(v), 1e-6f});
+  const float distance = half / std::tan(glm::radians(fov) * 0.5f);
+  // The planes are gathered to 1e-4 of the mesh's size (scene/layers.cpp): twice that holds them.
+  const float slab = std::max(2e-4f * scene.instanceBounds(plane.instance, time).radius(),
+                              1e-5f * distance);
+  const vec3 up = glm::length(v) > 0.0f ? glm::normalize(v) : vec3(0, 1, 0);
+  BillboardSpec b = facingBillboard(centre, n, distance, fov, distance - slab, distance + slab, up);
+  b.kind = BillboardSpec::Kind::kPlanar;
+  b.object = plane.instance;
+  b.part = true;
+  return b;
+}
+
 // The planar objects' billboards, shared by every reflector's list (their indices returned).
 // The ground (for the morph) is the largest horizontal one: with its walls it forms one box,
 // and it leaves the lists.
 std::vector<int> addPlanarBillboards(BillboardSet& set, const Scene& scene,
-                                     const std::vector<int>& planar, float time,
+                                     const BillboardedInstances& instances, float time,
                                      const BillboardSetOptions& options,
                                      const ReflectorSpheres& reflectors) {
+  const std::vector<int>& planar = instances.planar;
   std::vector<int> planar_index;
   float ground_area = 0.0f;
+  for (const EnvironmentPlane& part : instances.parts) {
+    BillboardSpec b = planarPartBillboard(scene, part, time, options.fov_degrees);
+    b.layer = set.surface_layers++;
+    planar_index.push_back(int(set.billboards.size()));
+    set.billboards.push_back(b);
+  }
   for (int i : planar) {
     float area = 0.0f;
     vec3 n;
@@ -245,8 +276,14 @@ void addReflectorList(BillboardSet& set, int r, const Scene& scene, const ListSo
   const vec3 viewer = reflectors.centre[size_t(r)];
   std::vector<ListedBillboard> diffuse, reflective;
   for (int index : sources.planar_index) {
-    const Bounds3 b = scene.instanceBounds(set.billboards[size_t(index)].object, time);
-    diffuse.push_back({index, b.center(), b.radius(), quadSphere(set.billboards[size_t(index)])});
+    const BillboardSpec& spec = set.billboards[size_t(index)];
+    const BoundingSphere quad = quadSphere(spec);
+    if (spec.part) {
+      diffuse.push_back({index, quad.centre, quad.radius, quad});
+      continue;
+    }
+    const Bounds3 b = scene.instanceBounds(spec.object, time);
+    diffuse.push_back({index, b.center(), b.radius(), quad});
   }
   for (size_t g = 0; g < sources.groups.size(); ++g) {
     const std::vector<int>& group = sources.groups[g];
@@ -289,7 +326,16 @@ BillboardedInstances billboardedInstances(const Scene& scene, const BillboardSet
     if (scene.isReflector(i)) continue;
     if (std::find(options.excluded.begin(), options.excluded.end(), i) != options.excluded.end())
       continue;
-    if (isPlanarInstance(scene, i, scene.instances[size_t(i)].matrixAt(time)))
+    const bool flat = isPlanarInstance(scene, i, scene.instances[size_t(i)].matrixAt(time));
+    const SceneLayers& layers = options.layers;
+    if (!flat && !layers.instances.empty() && layers.environment(i)) {
+      for (const EnvironmentPlane& p : layers.planes)
+        if (p.instance == i) out.parts.push_back(p);
+      if (std::find(layers.rest.begin(), layers.rest.end(), i) != layers.rest.end())
+        out.unbillboarded.push_back(i);
+      continue;
+    }
+    if (flat)
       out.planar.push_back(i);
     else
       (options.objects ? out.objects : out.unbillboarded).push_back(i);
@@ -308,7 +354,7 @@ BillboardSet placeBillboards(const Scene& scene, float time, const BillboardSetO
   if (groups.empty())
     for (int i : instances.objects) groups.push_back({i});
   const std::vector<int> planar_index =
-      addPlanarBillboards(set, scene, instances.planar, time, options, reflectors);
+      addPlanarBillboards(set, scene, instances, time, options, reflectors);
   set.cells = std::max(options.cells, 0);
   set.ranges.resize(reflectors.instances.size() * size_t(shading::direction_cell_count(set.cells)));
   ListSources sources{planar_index, groups, {}, reflectors};

@@ -18,6 +18,7 @@
 #include "core/bounds.h"
 #include "core/camera.h"
 #include "methods/impostor/billboard_shared.h"
+#include "scene/layers.h"
 #include "scene/scene.h"
 
 namespace mirage {
@@ -35,6 +36,9 @@ struct BillboardSpec {
   // with it): the quad is carried by it, and a reflective billboard's stored surface points and
   // normals in the shader (BillboardCarry). The identity for a fresh capture.
   mat4 carry{1.0f};
+  // Planar: it stands for one planar part of an environment instance (scene/layers.h), not for
+  // the whole of `object`; its capture sees only a thin slab around the part's plane.
+  bool part = false;
   int layer = -1;           // in the surface array: colour (diffuse) or normal (reflective)
   int position_layer = -1;  // reflective: in the surface-point array
 };
@@ -54,6 +58,10 @@ struct BillboardSetOptions {
   // Impostor groups (impostor_groups.h): the non-planar diffuse objects that share one
   // billboard per reflector, each list's first member standing for it. Empty: one an object.
   std::vector<std::vector<int>> groups;
+  // The scene's layers (scene/layers.h; BillboardStage fills them in): an environment instance
+  // that is not flat is a planar billboard per planar part, what its parts leave goes into the
+  // captured environment. Empty: every diffuse instance is an object.
+  SceneLayers layers;
 };
 
 struct BillboardSet {
@@ -88,6 +96,7 @@ struct BillboardSet {
 // (--billboard-objects planar).
 struct BillboardedInstances {
   std::vector<int> planar, objects, unbillboarded;
+  std::vector<EnvironmentPlane> parts;  // the planar parts of environment instances not flat
 };
 BillboardedInstances billboardedInstances(const Scene& scene, const BillboardSetOptions& options,
                                           float time);

@@ -27,7 +27,7 @@ constexpr Choice<bool> kLastBounceReflective[] = {{"all", true}, {"diffuse", fal
 
 GroupCost billboardStageCost(const Scene& scene, const BillboardStageOptions& options) {
   const BillboardedInstances instances = billboardedInstances(scene, options.set, 0.0f);
-  const int64_t planar = int64_t(instances.planar.size());
+  const int64_t planar = int64_t(instances.planar.size() + instances.parts.size());
   const bool objects = !instances.objects.empty();
   const int64_t reflectors = int64_t(scene.reflectorInstances().size());
   const int size = options.billboard_size;
@@ -118,6 +118,7 @@ BillboardStageOptions billboardStageOptions(const ParamValues& params) {
 
 BillboardStage::BillboardStage(const BillboardStageOptions& options, const Scene& scene)
     : options_(options), capture_(options.billboard_size) {
+  options_.set.layers = sceneLayers(scene);
   const BillboardedInstances instances = billboardedInstances(scene, options_.set, 0.0f);
   grouping_ = chooseGroups(
       scene, instances.objects, options_.groups, billboardStageCost(scene, options_),
