@@ -176,6 +176,8 @@ int runCompare(CompareArgs& args) {
   report.reference = args.reference;
   report.reference_info.ssaa = run.ssaa;
   report.reflector_names = reflectorNames(scene);
+  run.layers = sceneLayers(scene);
+  report.object_layers = objectLayers(scene, run.layers);
   report.timing =
       run.ssaa > 1
           ? fmt::format(

@@ -27,27 +27,48 @@ std::map<std::string, RegionMetrics> named(const std::map<uint32_t, RegionMetric
   return out;
 }
 
+// The layer regions of metrics.json (RegionSet::layers), by label (0: none).
+constexpr const char* kLayerRegionNames[] = {"", "environment", "object", "reflectors"};
+
+// The layer region of a reflector pixel of cause `label` whose first hit is `code`.
+uint32_t layerLabel(const SceneLayers& layers, uint32_t label, uint32_t code) {
+  switch (FirstHit(label)) {
+    case FirstHit::kEnvironment:
+      return 1;
+    case FirstHit::kDiffuse:
+      return layers.environment(firstHitInstance(code)) ? 1 : 2;
+    case FirstHit::kSelf:
+    case FirstHit::kReflector:
+    case FirstHit::kBeyondOrder:
+      return 3;
+    default:
+      return 0;  // none, unclassified
+  }
+}
+
 void addCauses(const CompareRun& run, const Image& shown, const ReferenceFrame& reference,
                const Image2D<float>& ssim, const Image2D<float>& flip, RegionSet& regions) {
   const PixelCauses& causes = *reference.causes;
   regions.has_causes = true;
   regions.causes = named(regionMetrics(shown, reference.display, ssim, flip, causes.label),
                          [](uint32_t label) { return std::string(causeName(label)); });
-  // The diffuse cause by the object its rays met: label = instance + 1.
+  // The diffuse cause by the object its rays met: label = instance + 1; and by layer.
+  const Scene& scene = *run.scene;
   IdImage objects(causes.code.width(), causes.code.height());
+  IdImage layers(causes.code.width(), causes.code.height());
   IdImage mixed(causes.mixed.width(), causes.mixed.height());
   for (size_t i = 0; i < objects.pixelCount(); ++i) {
     const uint32_t label = causes.label.data()[i];
     if (label == uint32_t(FirstHit::kDiffuse))
       objects.data()[i] = uint32_t(firstHitInstance(causes.code.data()[i]) + 1);
+    layers.data()[i] = layerLabel(run.layers, label, causes.code.data()[i]);
     mixed.data()[i] = label != 0 && causes.mixed.data()[i] ? 1u : 0u;
   }
-  const Scene& scene = *run.scene;
+  regions.layers = named(regionMetrics(shown, reference.display, ssim, flip, layers),
+                         [](uint32_t label) { return std::string(kLayerRegionNames[label]); });
   regions.diffuse_objects =
-      named(regionMetrics(shown, reference.display, ssim, flip, objects), [&](uint32_t label) {
-        const std::string& name = scene.instances[label - 1].name;
-        return name.empty() ? fmt::format("instance {}", label - 1) : name;
-      });
+      named(regionMetrics(shown, reference.display, ssim, flip, objects),
+            [&](uint32_t label) { return objectName(scene, int(label - 1)); });
   const auto m = regionMetrics(shown, reference.display, ssim, flip, mixed);
   if (auto it = m.find(1); it != m.end())
     regions.mixed = it->second;
@@ -56,6 +77,18 @@ void addCauses(const CompareRun& run, const Image& shown, const ReferenceFrame& 
 }
 
 }  // namespace
+
+std::string objectName(const Scene& scene, int instance) {
+  const std::string& name = scene.instances[size_t(instance)].name;
+  return name.empty() ? fmt::format("instance {}", instance) : name;
+}
+
+std::map<std::string, std::string> objectLayers(const Scene& scene, const SceneLayers& layers) {
+  std::map<std::string, std::string> out;
+  for (int i = 0; i < int(scene.instances.size()); ++i)
+    if (!scene.isReflector(i)) out[objectName(scene, i)] = layers.name(i);
+  return out;
+}
 
 std::vector<std::string> reflectorNames(const Scene& scene) {
   std::vector<std::string> names;

@@ -3,6 +3,7 @@
 // reference is from a converged one (--reference-check). Shared by one view and by paths.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,6 +23,10 @@ struct ReferenceFrame {
 // Unique display names of the scene's reflectors, in reflector-id order (an instance's name, with
 // its id added where it is empty or repeated).
 std::vector<std::string> reflectorNames(const Scene& scene);
+// A diffuse instance's name as the per-object figures give it ("instance N" when it has none).
+std::string objectName(const Scene& scene, int instance);
+// Each diffuse instance's layer ("environment" or "object") by objectName.
+std::map<std::string, std::string> objectLayers(const Scene& scene, const SceneLayers& layers);
 
 // The causes of the reference's reflector pixels: the run's ray tracer at `time`, through the
 // frame's sub-pixels (`frame_view`: the supersampled view).

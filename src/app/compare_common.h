@@ -21,6 +21,7 @@ namespace mirage::app {
 // report's header filled in.
 struct CompareRun {
   const Scene* scene = nullptr;
+  SceneLayers layers;   // the scene's layers (scene/layers.h), for the per-layer figures
   ivec2 size{0};        // the output: images, metrics
   int ssaa = 1;         // --ssaa: sub-pixels per side
   ivec2 frame_size{0};  // what the methods render at: size * ssaa

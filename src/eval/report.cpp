@@ -296,6 +296,7 @@ std::string metricsJson(const CompareReport& r) {
   j["triangles"] = r.triangles;
   j["tonemap"] = r.tonemap;
   j["flip_pixels_per_degree"] = number(r.flip_ppd);
+  j["object_layers"] = r.object_layers;
   nlohmann::json methods = nlohmann::json::object();
   for (const MethodReport& m : r.methods) {
     nlohmann::json e = metricsFields(m.metrics);

@@ -26,6 +26,10 @@ struct RegionSet {
   bool has_causes = false;                               // false: no ray tracer classified them
   std::map<std::string, RegionMetrics> causes;           // by cause name; pixels add up to all
   std::map<std::string, RegionMetrics> diffuse_objects;  // the `diffuse` cause by object name
+  // By layer of the reflected scene (scene/layers.h): `environment` (the sky and the environment
+  // instances' diffuse pixels), `object` (the object instances'), `reflectors` (the causes self,
+  // reflector and beyond_order).
+  std::map<std::string, RegionMetrics> layers;
   RegionMetrics mixed;  // reflector pixels whose sub-pixels met different things
 };
 // The mean over frames of each region's figures (frames without the region left out).
@@ -90,6 +94,8 @@ struct CompareReport {
   std::string timing;       // how the ms columns were measured (native runs under --ssaa)
   std::string cause_image;  // the cause classification drawn (eval/causes.h), or empty
   std::vector<std::string> reflector_names;  // in reflector-id order
+  // Each diffuse instance's layer (scene/layers.h) by its name, as diffuse_objects names it.
+  std::map<std::string, std::string> object_layers;
   std::string device;                        // GL renderer
   std::string cpu;                           // CPU model
   size_t triangles = 0;

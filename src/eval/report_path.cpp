@@ -80,6 +80,7 @@ RegionSet meanRegions(const std::vector<RegionSet>& frames) {
   out.reflectors = meanRegionMap(frames, &RegionSet::reflectors);
   out.causes = meanRegionMap(frames, &RegionSet::causes);
   out.diffuse_objects = meanRegionMap(frames, &RegionSet::diffuse_objects);
+  out.layers = meanRegionMap(frames, &RegionSet::layers);
   std::vector<const RegionMetrics*> mixed;
   for (const RegionSet& f : frames) {
     out.has_causes = out.has_causes || f.has_causes;

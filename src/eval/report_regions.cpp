@@ -51,33 +51,70 @@ double psnrOf(const MethodReport& m, const std::map<std::string, RegionMetrics> 
   return it == (m.regions.*map).end() || it->second.pixels == 0 ? std::nan("") : it->second.psnr;
 }
 
-std::string reflectorTable(const CompareReport& r) {
-  const auto methods = ranked(r);
-  if (r.reflector_names.empty() || methods.empty()) return {};
+// One row per region `names[k]` of `member`: its label cells (`labels[k]`, HTML), its pixels
+// (the most any method saw) and each method's PSNR on it, the best marked.
+std::string psnrRows(const std::vector<const MethodReport*>& methods,
+                     std::map<std::string, RegionMetrics> RegionSet::*member,
+                     const std::vector<std::string>& names, const std::vector<std::string>& labels) {
   std::string rows;
-  for (const std::string& name : r.reflector_names) {
+  for (size_t k = 0; k < names.size(); ++k) {
     size_t pixels = 0;
-    for (const MethodReport& m : r.methods)
-      if (auto it = m.regions.reflectors.find(name); it != m.regions.reflectors.end())
+    for (const MethodReport* m : methods)
+      if (auto it = (m->regions.*member).find(names[k]); it != (m->regions.*member).end())
         pixels = std::max(pixels, it->second.pixels);
     double best = std::nan("");
     for (const MethodReport* m : methods) {
-      double v = psnrOf(*m, &RegionSet::reflectors, name);
+      double v = psnrOf(*m, member, names[k]);
       if (!std::isnan(v) && (std::isnan(best) || v > best)) best = v;
     }
-    std::string row = fmt::format("<tr><td>{}</td><td>{}</td>", escape(name), pixels);
+    std::string row = fmt::format("<tr>{}<td>{}</td>", labels[k], pixels);
     for (const MethodReport* m : methods) {
-      double v = psnrOf(*m, &RegionSet::reflectors, name);
+      double v = psnrOf(*m, member, names[k]);
       row += fmt::format("<td{}>{}</td>", !std::isnan(v) && v == best ? " class=best" : "",
                          cell(v, "{:.2f}"));
     }
     rows += row + "</tr>\n";
   }
+  return rows;
+}
+
+std::string reflectorTable(const CompareReport& r) {
+  const auto methods = ranked(r);
+  if (r.reflector_names.empty() || methods.empty()) return {};
+  std::vector<std::string> labels;
+  for (const std::string& name : r.reflector_names) labels.push_back("<td>" + escape(name) + "</td>");
+  const std::string rows = psnrRows(methods, &RegionSet::reflectors, r.reflector_names, labels);
   return fmt::format(
       "<section id=reflectors><h2>Per reflector</h2><p class=d>Reflector PSNR (dB) of each "
       "method on each reflector's pixels (the reference's reflector ids); green: the best method "
       "for that reflector.</p>\n<table><thead><tr><th>reflector</th><th>pixels</th>{}</tr>"
       "</thead><tbody>\n{}</tbody></table></section>\n",
+      methodHeader(methods), rows);
+}
+
+// The error per layer of the reflected scene and per diffuse object, each with its layer.
+std::string layerTable(const CompareReport& r) {
+  const auto methods = ranked(r);
+  bool any = false;
+  for (const MethodReport* m : methods) any = any || !m->regions.layers.empty();
+  if (!any) return {};
+  const std::vector<std::string> layers = {"environment", "object", "reflectors"};
+  std::vector<std::string> labels, objects, object_labels;
+  for (const std::string& layer : layers) labels.push_back("<td><b>" + layer + "</b></td><td></td>");
+  for (const auto& [name, layer] : r.object_layers) {
+    objects.push_back(name);
+    object_labels.push_back("<td>" + escape(name) + "</td><td>" + escape(layer) + "</td>");
+  }
+  const std::string rows = psnrRows(methods, &RegionSet::layers, layers, labels) +
+                           psnrRows(methods, &RegionSet::diffuse_objects, objects, object_labels);
+  return fmt::format(
+      "<section id=layers><h2>Per layer and object</h2><p class=d>PSNR (dB) on the reflector "
+      "pixels whose reflected ray (the ray tracer's) meets each layer of the reflected scene "
+      "first — the environment (the sky and the environment's instances), the objects, the "
+      "reflectors (self, other, beyond the order) — then on those that meet each diffuse object, "
+      "with the object's layer (docs/architecture.md, \"Layers\"); green: the best method.</p>\n"
+      "<table><thead><tr><th>region</th><th>layer</th><th>pixels</th>{}</tr></thead><tbody>\n{}"
+      "</tbody></table></section>\n",
       methodHeader(methods), rows);
 }
 
@@ -167,6 +204,7 @@ nlohmann::json regionsJson(const RegionSet& regions) {
   if (regions.has_causes) {
     e["causes"] = regionMapJson(regions.causes, false);
     e["diffuse_objects"] = regionMapJson(regions.diffuse_objects, false);
+    e["layers"] = regionMapJson(regions.layers, false);
     e["mixed"] = regionJson(regions.mixed, false);
   }
   return e;
@@ -204,7 +242,7 @@ std::string samplingNote(const CompareReport& r) {
 }
 
 std::string regionSections(const CompareReport& r) {
-  return reflectorTable(r) + causeSection(r);
+  return reflectorTable(r) + causeSection(r) + layerTable(r);
 }
 
 }  // namespace mirage::report_html

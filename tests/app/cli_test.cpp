@@ -152,9 +152,9 @@ TEST_F(CliWithGl, CompareWritesTheReport) {
 }
 
 // metrics.json under matched sampling: the reference's sampling and noise floor, each method's
-// error per reflector and per cause, and the sums that make them a partition of the reflector
-// pixels (pixel counts and squared errors add up to the method's reflector totals).
-TEST_F(CliWithGl, CompareSplitsTheErrorByReflectorAndCause) {
+// error per reflector, per cause and per layer, and the sums that make each a partition of the
+// reflector pixels (pixel counts and squared errors add up to the method's reflector totals).
+TEST_F(CliWithGl, CompareSplitsTheErrorByReflectorCauseAndLayer) {
   auto dir = testTempDir("cli");
   CliResult r =
       runMirage("compare --scene spheres9 --methods envmap,billboard --ssaa 2 --size 96x64 -o " +
@@ -195,9 +195,27 @@ TEST_F(CliWithGl, CompareSplitsTheErrorByReflectorAndCause) {
     for (const auto& [object, c] : m["diffuse_objects"].items())
       objects += c["pixels"].get<double>();
     EXPECT_EQ(objects, m["causes"]["diffuse"]["pixels"].get<double>()) << name;
+    // The layers split the same pixels: the sky and the floor (the environment), the objects,
+    // the reflectors.
+    double layer_pixels = 0.0, layer_sse = 0.0;
+    for (const auto& [layer, c] : m["layers"].items()) {
+      layer_pixels += c["pixels"].get<double>();
+      layer_sse += c["sse"].get<double>();
+    }
+    EXPECT_EQ(layer_pixels, pixels) << name;
+    EXPECT_NEAR(layer_sse, sse, 1e-6 * sse) << name;
+    const double sky_and_floor = m["causes"]["environment"]["pixels"].get<double>() +
+                                 m["diffuse_objects"]["floor"]["pixels"].get<double>();
+    EXPECT_EQ(m["layers"]["environment"]["pixels"].get<double>(), sky_and_floor) << name;
+    EXPECT_EQ(m["layers"]["object"]["pixels"].get<double>(),
+              m["causes"]["diffuse"]["pixels"].get<double>() -
+                  m["diffuse_objects"]["floor"]["pixels"].get<double>())
+        << name;
     EXPECT_GT(m["mixed"]["pixels"].get<double>(), 0.0) << name;
     EXPECT_LT(m["mixed"]["pixels"].get<double>(), pixels) << name;
   }
+  EXPECT_EQ(j["object_layers"]["floor"], "environment");
+  EXPECT_EQ(j["object_layers"]["teapot"], "object");
   // The reference against itself: no error anywhere.
   for (const auto& [cause, c] : j["methods"]["raytrace"]["causes"].items())
     EXPECT_EQ(c["sse"].get<double>(), 0.0) << cause;

@@ -275,6 +275,7 @@ TEST(Report, RegionsAndTheReferencesNoiseFloor) {
   r.reflector_names = {"left", "right"};
   r.reference_info = {4, true, 64, 41.5, 37.25};
   r.cause_image = "causes.png";
+  r.object_layers = {{"floor", "environment"}};
   auto region = [](size_t pixels, double psnr, double sse) {
     RegionMetrics m;
     m.pixels = pixels, m.psnr = psnr, m.sse = sse, m.ssim = 0.9, m.flip = 0.1;
@@ -288,6 +289,7 @@ TEST(Report, RegionsAndTheReferencesNoiseFloor) {
     m.regions.causes = {{"environment", region(900, 30.0, 1.0)},
                         {"diffuse", region(334, 12.0, 3.0)}};
     m.regions.diffuse_objects = {{"floor", region(334, 12.0, 3.0)}};
+    m.regions.layers = {{"environment", region(1234, envmap ? 21.0 : 19.0, 4.0)}};
     m.regions.mixed = region(50, 20.0, 0.5);
   }
   const nlohmann::json j = nlohmann::json::parse(metricsJson(r));
@@ -298,6 +300,8 @@ TEST(Report, RegionsAndTheReferencesNoiseFloor) {
   EXPECT_EQ(j["methods"]["envmap"]["causes"]["diffuse"]["sse"], 3.0);
   EXPECT_EQ(j["methods"]["envmap"]["diffuse_objects"]["floor"]["pixels"], 334);
   EXPECT_EQ(j["methods"]["envmap"]["mixed"]["pixels"], 50);
+  EXPECT_EQ(j["methods"]["envmap"]["layers"]["environment"]["psnr"], 21.0);
+  EXPECT_EQ(j["object_layers"]["floor"], "environment");
   const std::string html = reportHtml(r);
   // envmap is best on the left reflector, none on the right one.
   EXPECT_NE(html.find("<tr><td>left</td><td>1000</td><td class=best>25.00</td><td>15.00</td>"),
@@ -306,6 +310,12 @@ TEST(Report, RegionsAndTheReferencesNoiseFloor) {
   EXPECT_NE(html.find("<tr><td>right</td><td>234</td><td>11.00</td><td class=best>14.00</td>"),
             std::string::npos);
   EXPECT_NE(html.find("src=\"causes.png\""), std::string::npos);
+  // The layer table: each layer, then each object with its layer, the best marked.
+  EXPECT_NE(html.find("<tr><td><b>environment</b></td><td></td><td>1234</td><td class=best>21.00"
+                      "</td><td>19.00</td>"),
+            std::string::npos)
+      << html;
+  EXPECT_NE(html.find("<tr><td>floor</td><td>environment</td><td>334</td>"), std::string::npos);
   EXPECT_NE(html.find("75.0%"), std::string::npos);            // diffuse: 3 of the 4 units of sse
   EXPECT_NE(html.find("<b>37.25 dB</b>"), std::string::npos);  // the noise floor
 }
