@@ -14,6 +14,11 @@ SHARED_BEGIN
 
 // Hit distance used for rays that leave the scene (environment lookups).
 SHARED_CONST float MISS_DISTANCE = 1.0e30f;
+// A reflection probe's distance (half float, render/probe_array.h) at least this large is the
+// sky. A half float holds at most 65504, and a driver may store MISS_DISTANCE as that or as
+// +inf (llvmpipe clamps it), so the sky is told by a bound both readings pass; what a probe
+// shows lies within its capture's far plane, 100 times the scene's radius, far nearer.
+SHARED_CONST float PROBE_SKY_DISTANCE = 3.0e4f;
 
 SHARED_FN vec3 shade_diffuse(vec3 albedo, vec3 normal, vec3 light_dir, vec3 light_color,
                              vec3 ambient) {

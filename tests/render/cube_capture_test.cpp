@@ -10,6 +10,7 @@
 #include "render/scene_passes.h"
 #include "scene/builtin_scenes.h"
 #include "shading/cubemap.h"
+#include "shading/shading.h"
 #include "support/gl_test.h"
 #include "support/scenes.h"
 
@@ -21,10 +22,10 @@ class CubeCaptureTest : public GlTest {};
 // Captures `scene` from `centre` into a size^3 cube: the environment, and the diffuse objects
 // when `diffuse` (reflectors are never drawn). Returns the six faces' level-0 texels, face-major.
 std::vector<vec4> captureCube(const Scene& scene, const EnvironmentMap& env, const vec3& centre,
-                              int size, bool diffuse) {
+                              int size, bool diffuse, GLenum format = GL_RGBA32F) {
   GpuScene gpu(scene, env);
   ScenePasses passes(gpu);
-  gpu::Texture cube = gpu::Texture::createCube(GL_RGBA32F, size);
+  gpu::Texture cube = gpu::Texture::createCube(format, size);
   CubeCapture capture(size);
   capture.capture(cube, 0, centre, 0.01f, 1000.0f, [&](const View& v) {
     passes.begin(v, FrameSettings{});
@@ -98,6 +99,27 @@ TEST_F(CubeCaptureTest, DiffuseCaptureMatchesRaysTracedFromTheProbeCentre) {
   // mis-oriented or mis-projected face puts whole cells on the wrong side (tens of percent).
   EXPECT_LT(double(off) / texels, 0.02) << off << " of " << texels << " texels differ by > 5%";
   EXPECT_LT(sum / texels, 0.01);
+}
+
+TEST_F(CubeCaptureTest, AHalfFloatProbeTellsTheSkyByItsDistance) {
+  // Probes are half floats (render/probe_array.h), which cannot hold MISS_DISTANCE: a driver
+  // stores the sky's distance as the largest half (llvmpipe) or as +inf. Either must read as
+  // the sky (PROBE_SKY_DISTANCE), and what the probe sees (a diffuse object here) must not.
+  Scene scene = spheresOverFloor(/*floor_only=*/true);
+  EnvironmentMap env = EnvironmentMap::sky(scene.light, 16);
+  const std::vector<vec4> pixels = captureCube(scene, env, vec3(0.0f, 1.0f, 0.0f), 16, true,
+                                               GL_RGBA16F);
+  int sky = 0, floor = 0;
+  for (const vec4& p : pixels) {
+    if (p.w >= shading::PROBE_SKY_DISTANCE) {
+      ++sky;
+    } else {
+      ++floor;
+      EXPECT_LT(p.w, 20.0f);  // the 8 x 8 floor, 1 below the centre
+    }
+  }
+  EXPECT_GE(sky, 16 * 16 * 3);    // the upper faces' texels and the side faces' upper halves
+  EXPECT_GE(floor, 16 * 16);      // the lower face at least
 }
 
 }  // namespace

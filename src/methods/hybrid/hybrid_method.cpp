@@ -250,20 +250,31 @@ class HybridMethod final : public Method {
   }
 
   // Binds the background for the resolve pass: the probes, where each was captured, and the
-  // proxy — the bounds of what they show (the environment, the objects without points), grown
-  // to hold every probe centre, as `envmap-box`'s.
+  // proxy — the bounds of what they show (the environment, the objects without points), open on
+  // every side where they do not enclose the probes: a floor's box has no top, so that a ray
+  // leaving a reflector upwards meets the sky along its own direction, not the floor's plane
+  // lifted to the reflector's height.
   void bindBackground(FrameContext& frame) {
     ProbeLookup lookup = backgroundLookup();
     lookup.probes = &probes_;
     lookup.centres = &centres_;
     std::vector<vec4> centres;
-    for (int i : background_) lookup.proxy.extend(frame.gpu.instanceBounds(i));
+    Bounds3 around;  // the probe centres
     for (size_t r = 0; r < reflectors_.size(); ++r) {
       const vec3 c = probes_.centre(int(r), frame.gpu.instanceBounds(reflectors_[r]).center());
       centres.push_back(vec4(c, 1.0f));
-      lookup.proxy.extend(c);
+      around.extend(c);
     }
     centres_.upload(std::span<const vec4>(centres));
+    Bounds3 shown;
+    for (int i : background_) shown.extend(frame.gpu.instanceBounds(i));
+    const float open = 1e4f * std::max(frame.gpu.scene().bounds(frame.gpu.time()).radius(), 1.0f);
+    Bounds3& proxy = lookup.proxy;
+    proxy = Bounds3{around.lo - vec3(open), around.hi + vec3(open)};
+    for (int a = 0; a < 3 && !shown.empty(); ++a) {
+      if (shown.lo[a] < around.lo[a]) proxy.lo[a] = shown.lo[a];
+      if (shown.hi[a] > around.hi[a]) proxy.hi[a] = shown.hi[a];
+    }
     lookup.bind(resolve_program_);
   }
 

@@ -2,8 +2,8 @@
 // that shades with them (those methods' reflector pass, `ssr`'s screen-space pass for the pixels
 // its screen cannot show) includes this file, with PROBE_BOX defined for the box proxy (a
 // parallax-corrected cube map), and binds them with render/probe_lookup.h. The probes' alpha
-// holds the distance from their centre to what they saw (infinite for the sky: the half-float
-// texture turns MISS_DISTANCE into +inf).
+// holds the distance from their centre to what they saw (PROBE_SKY_DISTANCE or more for the
+// sky: the half-float texture holds MISS_DISTANCE as its largest value or as +inf, by driver).
 #include "render/shaders/probe_radiance.glsl"
 
 layout(binding = MIRAGE_UNIT_METHOD) uniform samplerCubeArray u_probes;
@@ -35,9 +35,11 @@ vec4 probe_lookup(vec3 position, vec3 direction, int reflector, vec3 dx, vec3 dy
       u_proxy_sphere != 0
           ? sphere_parallax_direction(position, direction, u_sphere.xyz, u_sphere.w, centre, t)
           : box_parallax_direction(position, direction, u_box_min, u_box_max, centre, t);
-  // Where the probe saw the sky along the corrected direction, the sky is at infinity and the
-  // ray's own direction is exact; elsewhere the box point is the better guess.
-  if (t >= 0.0f && textureLod(u_probes, vec4(corrected, layer), 0.0f).a < 0.5f * MISS_DISTANCE) {
+  // The box point, wherever the ray leaves the box: also where the probe saw the sky there (a
+  // test for the sky here would depend on how the driver stores MISS_DISTANCE in a half float;
+  // a proxy open where nothing bounds the scene — hybrid's — sends such rays far, along their
+  // own direction).
+  if (t >= 0.0f) {
     lookup = corrected;
     // The footprint seen from the probe: the ray's angular footprint scaled by the ratio of the
     // distance travelled (t) to the distance from the probe.
@@ -49,10 +51,11 @@ vec4 probe_lookup(vec3 position, vec3 direction, int reflector, vec3 dx, vec3 dy
   vec4 probe = probe_radiance(u_probes, lookup, layer, dx, dy);
 #ifdef PROBE_BOX
   // The distance from the shaded point to what the probe saw along `lookup`.
-  if (probe.a < 0.5f * MISS_DISTANCE) {
+  if (probe.a < PROBE_SKY_DISTANCE) {
     vec3 seen = centre + probe.a * normalize(lookup);
     return vec4(probe.rgb, length(seen - position));
   }
 #endif
+  if (probe.a >= PROBE_SKY_DISTANCE) probe.a = MISS_DISTANCE;
   return probe;
 }
