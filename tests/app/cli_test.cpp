@@ -113,6 +113,21 @@ TEST(Cli, ScenesListsTheBuiltInScenesOnStdout) {
     EXPECT_NE(r.output.find(s), std::string::npos) << r.output;
 }
 
+TEST(Cli, ScenesWithANameListsItsInstancesAndTheirLayers) {
+  CliResult r = runMirage("scenes mirror-room 2>&1");
+  EXPECT_EQ(r.code, 0) << r.output;
+  // The room holds the mirror: environment, with its six walls as planar parts.
+  EXPECT_NE(r.output.find("room                         environment        12      6  holds "
+                          "reflector 'wall-mirror'"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("wall-mirror                  reflector"), std::string::npos);
+  EXPECT_NE(r.output.find("pyramid                      object"), std::string::npos);
+  r = runMirage("scenes no-such-scene 2>&1");
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("no-such-scene: no such scene"), std::string::npos) << r.output;
+}
+
 TEST(Cli, NoOpenGLDriverExitsWithThree) {
   auto dir = testTempDir("cli");
   CliResult r =
