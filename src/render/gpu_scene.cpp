@@ -79,6 +79,8 @@ GpuScene::GpuScene(const Scene& scene, const EnvironmentMap& environment)
   for (const Material& m : scene.materials) materials.push_back(m.gpuData());
   material_buffer_ = gpu::Buffer::fromSpan<shading::MaterialData>(materials);
   matrices_.assign(scene.instances.size(), mat4(1.0f));
+  for (int i = 0; i < int(scene.instances.size()); ++i)
+    local_bounds_.push_back(scene.localBounds(i));
   deformed_.resize(scene.instances.size());
   instance_versions_.assign(scene.instances.size(), 0);
   transform_versions_.assign(scene.instances.size(), 0);
@@ -166,7 +168,13 @@ void GpuScene::uploadInstances() {
 }
 
 Bounds3 GpuScene::instanceBounds(int instance) const {
-  return scene_.localBounds(instance).transformed(matrices_[size_t(instance)]);
+  return local_bounds_[size_t(instance)].transformed(matrices_[size_t(instance)]);
+}
+
+Bounds3 GpuScene::bounds() const {
+  Bounds3 b;
+  for (int i = 0; i < int(matrices_.size()); ++i) b.extend(instanceBounds(i));
+  return b;
 }
 
 void GpuScene::bindShared() const {

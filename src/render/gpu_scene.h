@@ -49,7 +49,10 @@ class GpuScene {
   const Mesh& mesh(int instance) const;
   const mat4& instanceMatrix(int instance) const { return matrices_[size_t(instance)]; }
   const std::vector<mat4>& instanceMatrices() const { return matrices_; }
+  // World bounds of an instance at time() (Scene::instanceBounds, its object-space bounds kept
+  // from construction), and of every instance together (Scene::bounds at time()).
   Bounds3 instanceBounds(int instance) const;
+  Bounds3 bounds() const;
   // The object-space vertex positions the instance is drawn with, read back from its vertex
   // buffer on the GPU (tests check what was uploaded).
   std::vector<vec3> uploadedPositions(int instance) const;
@@ -76,6 +79,7 @@ class GpuScene {
   gpu::Texture environment_;
   gpu::Buffer instance_buffer_, material_buffer_;
   std::vector<mat4> matrices_;
+  std::vector<Bounds3> local_bounds_;  // per instance: Scene::localBounds, read once
   std::vector<Mesh> deformed_;  // per instance: the mesh at time_ (empty unless it deforms)
   std::vector<uint64_t> instance_versions_, transform_versions_, shape_versions_;
   std::vector<int> reflectors_;

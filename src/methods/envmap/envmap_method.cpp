@@ -121,7 +121,7 @@ class EnvmapMethod final : public Method {
                   const std::vector<std::vector<int>>& shown_deep) {
     const int count = int(reflectors_.size());
     std::stable_sort(due.begin(), due.end(), [&](int a, int b) { return a / count < b / count; });
-    const float radius = std::max(frame.gpu.scene().bounds(frame.gpu.time()).radius(), 1e-3f);
+    const float radius = std::max(frame.gpu.bounds().radius(), 1e-3f);
     int last_level = -1;
     for (int unit : due) {
       const int l = unit / count, r = unit % count;

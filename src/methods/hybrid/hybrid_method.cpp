@@ -268,7 +268,7 @@ class HybridMethod final : public Method {
     centres_.upload(std::span<const vec4>(centres));
     Bounds3 shown;
     for (int i : background_) shown.extend(frame.gpu.instanceBounds(i));
-    const float open = 1e4f * std::max(frame.gpu.scene().bounds(frame.gpu.time()).radius(), 1.0f);
+    const float open = 1e4f * std::max(frame.gpu.bounds().radius(), 1.0f);
     Bounds3& proxy = lookup.proxy;
     proxy = Bounds3{around.lo - vec3(open), around.hi + vec3(open)};
     for (int a = 0; a < 3 && !shown.empty(); ++a) {

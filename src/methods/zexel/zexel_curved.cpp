@@ -68,7 +68,7 @@ void ZexelCurvedReflectors::update(FrameContext& frame) {
   if (!inverse_ || curved_.empty() || frame.settings.order == 0) return;
   // The cubes show every diffuse object, the other reflectors and the light.
   const std::vector<int> reflectors = frame.gpu.scene().reflectorInstances();
-  const float radius = std::max(frame.gpu.scene().bounds(frame.gpu.time()).radius(), 1e-3f);
+  const float radius = std::max(frame.gpu.bounds().radius(), 1e-3f);
   // The frame's alpha is the distance from the view's eye: from the centre here.
   const int captured =
       cubes_.updateAtReflectors(frame.gpu, frame.settings.mip, curved_, diffuse_, reflectors,
