@@ -8,11 +8,32 @@
 
 #include "app/commands.h"
 #include "scene/layers.h"
+#include "scene/probes.h"
 #include "scene/scene_loader.h"
 
 namespace mirage::app {
 
 namespace {
+
+// The scene's own reflection probes (scene/probes.h), in blend order, with the reflectors each
+// influences; none: one probe at each reflector.
+void printProbes(const Scene& scene) {
+  if (scene.probes.empty()) {
+    std::printf("  probes: one at each reflector's centre (the scene gives none)\n");
+    return;
+  }
+  std::printf("  probes (in blend order): %-20s %-8s %-9s %8s  %s\n", "name", "priority",
+              "influence", "blend", "influences");
+  for (int k : probeBlendOrder(scene.probes)) {
+    const ReflectionProbe& p = scene.probes[size_t(k)];
+    std::string influenced;
+    for (int r : reflectorsInfluenced(scene, p))
+      influenced += (influenced.empty() ? "" : ", ") + scene.instances[size_t(r)].name;
+    std::printf("  %-44s %-8d %-9s %8g  %s\n", p.name.c_str(), p.priority,
+                p.influence.sphere ? "sphere" : "box", double(p.blend_distance),
+                influenced.empty() ? "(none)" : influenced.c_str());
+  }
+}
 
 // One scene's instances: name, layer and why, triangles, and the planar parts of the
 // environment's instances; -v adds the description.
@@ -34,6 +55,7 @@ void printInstances(const std::string& spec, bool verbose) {
                 layers.instances[size_t(i)].why.c_str(),
                 environment && rest ? "; the rest through probes" : "");
   }
+  printProbes(scene);
 }
 
 }  // namespace

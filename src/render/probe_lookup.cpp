@@ -5,14 +5,29 @@
 
 namespace mirage {
 
+ProbeLookup ProbeLookup::kindFor(const Scene& scene, bool box) {
+  ProbeLookup lookup;
+  lookup.box = box;
+  lookup.blend = !scene.probes.empty();
+  return lookup;
+}
+
 std::vector<std::string> ProbeLookup::defines() const {
-  if (box) return {"PROBE_BOX 1"};
-  return {};
+  std::vector<std::string> out;
+  if (box) out.push_back("PROBE_BOX 1");
+  if (blend) out.push_back("PROBE_BLEND 1");
+  return out;
 }
 
 void ProbeLookup::bind(const gpu::Program& program) const {
   MIRAGE_CHECK(probes != nullptr);
   probes->bind(MIRAGE_UNIT_METHOD);
+  if (blend) {
+    MIRAGE_CHECK(volumes != nullptr);
+    volumes->bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_METHOD_SSBO);
+    program.set("u_probe_count", volume_count);
+    return;
+  }
   if (!box) return;
   MIRAGE_CHECK(centres != nullptr);
   centres->bindBase(GL_SHADER_STORAGE_BUFFER, MIRAGE_BIND_METHOD_SSBO);

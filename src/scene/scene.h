@@ -15,6 +15,7 @@
 #include "scene/layers.h"
 #include "scene/material.h"
 #include "scene/mesh.h"
+#include "scene/probes.h"
 
 namespace mirage {
 
@@ -99,6 +100,7 @@ struct Scene {
   Light light;
   EnvironmentDesc environment;
   std::vector<ReflectionRule> reflections;  // empty: no assignment (method `mixed` needs one)
+  std::vector<ReflectionProbe> probes;      // empty: one probe at each reflector, its own
 
   bool isReflector(int instance) const {
     return materials[size_t(instances[size_t(instance)].material)].isReflector();

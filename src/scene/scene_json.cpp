@@ -7,6 +7,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <spdlog/spdlog.h>
+
 #include "core/image.h"
 #include "scene/scene_json_internal.h"
 #include "scene/scene_loader.h"
@@ -267,7 +269,7 @@ Scene parseSceneJson(const std::string& file, const std::string& text,
   ctx.base_dir = base_dir;
   Field root(ctx.file, doc, "");
   root.allowKeys({"name", "description", "environment", "light", "textures", "materials", "meshes",
-                  "instances", "cameras", "reflections"},
+                  "instances", "cameras", "reflections", "probes"},
                  "a scene file");
   Scene& s = ctx.scene;
   s.source = file;
@@ -306,8 +308,10 @@ Scene parseSceneJson(const std::string& file, const std::string& text,
     }
   }
   if (auto list = root.optional("reflections")) s.reflections = scene_json::parseReflections(*list);
+  if (auto list = root.optional("probes")) s.probes = scene_json::parseProbes(*list);
   s.ensureCamera();
   s.validate();
+  for (const std::string& warning : probeWarnings(s)) spdlog::warn("{}", warning);
   return s;
 }
 

@@ -63,5 +63,8 @@ CameraDesc parseCamera(const Field& f, size_t index);
 void parseInstances(Context& ctx, const Field& root);
 // "reflections": [{"reflectors", "method", "params"}, ...] (scene_json_reflections.cpp).
 std::vector<ReflectionRule> parseReflections(const Field& list);
+// "probes": [{"name", "position", "influence", "blend_distance", "proxy", "priority"}, ...]
+// (scene_json_probes.cpp).
+std::vector<ReflectionProbe> parseProbes(const Field& list);
 
 }  // namespace mirage::scene_json

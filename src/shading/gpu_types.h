@@ -63,12 +63,23 @@ struct MaterialData {
   ivec4 kind;    // x: MIRAGE_MATERIAL_*; y: albedo texture (-1 none); z: normal map (-1 none)
 };
 
+// One reflection probe of a scene's "probes" (scene/probes.h) as the blended probe lookup reads
+// it (render/shaders/probe_lookup.glsl, PROBE_BLEND), in blend order (shading/probe_blend.h).
+struct ProbeVolumeData {
+  vec4 position;      // xyz: where the probe was captured; w: its cube's layer
+  vec4 influence_lo;  // xyz: the influence box's min, or the sphere's centre; w: blend distance
+  vec4 influence_hi;  // xyz: the influence box's max; w: the sphere's radius (0: a box)
+  vec4 proxy_lo;      // xyz: the proxy box's min, or the sphere's centre
+  vec4 proxy_hi;      // xyz: the proxy box's max; w: the sphere's radius (0: a box)
+};
+
 SHARED_END
 
 #ifndef MIRAGE_GLSL
 static_assert(sizeof(mirage::shading::FrameData) == 2 * 64 + 7 * 16, "FrameData layout");
 static_assert(sizeof(mirage::shading::InstanceData) == 2 * 64 + 16, "InstanceData layout");
 static_assert(sizeof(mirage::shading::MaterialData) == 5 * 16, "MaterialData layout");
+static_assert(sizeof(mirage::shading::ProbeVolumeData) == 5 * 16, "ProbeVolumeData layout");
 #endif
 
 #endif  // MIRAGE_SHADING_GPU_TYPES_H

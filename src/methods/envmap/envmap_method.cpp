@@ -8,6 +8,7 @@
 #include "render/base_colour.h"
 #include "render/probe_array.h"
 #include "render/probe_lookup.h"
+#include "shading/gpu_types.h"
 
 namespace mirage {
 
@@ -15,11 +16,29 @@ namespace {
 
 enum class Variant { kProbes, kBox, kInfinite };
 
-std::vector<std::string> shaderDefines(Variant variant) {
+std::vector<std::string> shaderDefines(Variant variant, const Scene& scene) {
   if (variant == Variant::kInfinite) return {"ENVMAP_INFINITE 1"};
-  ProbeLookup lookup;
-  lookup.box = variant == Variant::kBox;
-  return lookup.defines();
+  return ProbeLookup::kindFor(scene, variant == Variant::kBox).defines();
+}
+
+// A scene's probes in blend order (shading/probe_blend.h).
+std::vector<ReflectionProbe> probesInBlendOrder(const Scene& scene) {
+  std::vector<ReflectionProbe> out;
+  for (int k : probeBlendOrder(scene.probes)) out.push_back(scene.probes[size_t(k)]);
+  return out;
+}
+
+// What the blended lookup reads of probe `layer`.
+shading::ProbeVolumeData volumeData(const ReflectionProbe& probe, int layer) {
+  shading::ProbeVolumeData d;
+  d.position = vec4(probe.position, float(layer));
+  const ProbeVolume& inf = probe.influence;
+  d.influence_lo = vec4(inf.sphere ? inf.centre : inf.box.lo, probe.blend_distance);
+  d.influence_hi = vec4(inf.sphere ? vec3(0.0f) : inf.box.hi, inf.sphere ? inf.radius : 0.0f);
+  const ProbeVolume& proxy = probe.proxy;
+  d.proxy_lo = vec4(proxy.sphere ? proxy.centre : proxy.box.lo, 0.0f);
+  d.proxy_hi = vec4(proxy.sphere ? vec3(0.0f) : proxy.box.hi, proxy.sphere ? proxy.radius : 0.0f);
+  return d;
 }
 
 class EnvmapMethod final : public Method {
@@ -31,8 +50,10 @@ class EnvmapMethod final : public Method {
         sphere_proxy_(variant == Variant::kBox &&
                       setup.params.choice<ProbeProxy>("proxy", kProbeProxies) ==
                           ProbeProxy::kSphere),
+        scene_probes_(infinite_ ? std::vector<ReflectionProbe>{}
+                                : probesInBlendOrder(setup.gpu.scene())),
         program_(gpu::Program::graphics("render/shaders/scene.vert", "methods/envmap/envmap.frag",
-                                        shaderDefines(variant))),
+                                        shaderDefines(variant, setup.gpu.scene()))),
         base_program_(baseColourProgram()),
         diffuse_(setup.gpu.scene().diffuseInstances()),
         reflectors_(setup.gpu.scene().reflectorInstances()),
@@ -40,6 +61,15 @@ class EnvmapMethod final : public Method {
     lookup_.box = variant == Variant::kBox;
     lookup_.sphere_proxy = sphere_proxy_;
     lookup_.centres = &centres_;
+    if (!scene_probes_.empty()) {
+      lookup_.blend = true;
+      lookup_.volumes = &volumes_;
+      lookup_.volume_count = int(scene_probes_.size());
+      std::vector<shading::ProbeVolumeData> volumes;
+      for (size_t k = 0; k < scene_probes_.size(); ++k)
+        volumes.push_back(volumeData(scene_probes_[k], int(k)));
+      volumes_.upload(std::span<const shading::ProbeVolumeData>(volumes));
+    }
   }
 
   void update(FrameContext& frame) override {
@@ -49,7 +79,7 @@ class EnvmapMethod final : public Method {
       levels_.clear();
       for (int l = 0; l < levels; ++l) levels_.push_back(std::make_unique<ProbeArray>(size_));
     }
-    for (auto& level : levels_) level->allocate(int(reflectors_.size()), frame.settings.mip);
+    for (auto& level : levels_) level->allocate(probeCount(), frame.settings.mip);
     capture(frame);
   }
 
@@ -74,7 +104,8 @@ class EnvmapMethod final : public Method {
     std::map<std::string, double> s = {{"cube_captures", double(cube_captures_)},
                                        {"capture_passes", double(capture_passes_)},
                                        {"probes_pending", double(pending_)}};
-    if (variant_ == Variant::kBox) {
+    if (!infinite_) s["probes"] = probeCount();
+    if (variant_ == Variant::kBox && scene_probes_.empty()) {
       const vec3 e = lookup_.proxy.extent();
       s["proxy_box_x"] = e.x;
       s["proxy_box_y"] = e.y;
@@ -84,19 +115,32 @@ class EnvmapMethod final : public Method {
   }
 
  private:
+  // One probe per reflector (its own), or the scene's probes.
+  int probeCount() const {
+    return int(scene_probes_.empty() ? reflectors_.size() : scene_probes_.size());
+  }
+
   // Level l of the probes shows the other reflectors through level l - 1 (level 0: at their base
   // colour), so the last of K levels holds K bounces. Every (level, probe) is one capture, made
   // again once what it shows drifted beyond the tolerances: the most drifted first, within the
   // budget, and a level's captures before the next level's within the frame.
   void capture(FrameContext& frame) {
-    const size_t count = reflectors_.size();
+    const size_t count = size_t(probeCount());
     std::vector<vec3> centres;
     std::vector<std::vector<int>> shown(count), shown_deep(count);
-    for (size_t r = 0; r < count; ++r) {
-      centres.push_back(frame.gpu.instanceBounds(reflectors_[r]).center());
-      shown[r] = shownByProbe(diffuse_, reflectors_, reflectors_[r]);
+    for (size_t k = 0; k < count; ++k) {
+      if (!scene_probes_.empty()) {
+        // A scene's probe shows the same at every level (the reflectors in it through the level
+        // below), but the reflectors that hold its position.
+        centres.push_back(scene_probes_[k].position);
+        shown[k] = shownByReflectionProbe(frame.gpu.scene(), scene_probes_[k]);
+        shown_deep[k] = shown[k];
+        continue;
+      }
+      centres.push_back(frame.gpu.instanceBounds(reflectors_[k]).center());
+      shown[k] = shownByProbe(diffuse_, reflectors_, reflectors_[k]);
       // Deeper levels see the probe's own reflector too, in the others' probes.
-      shown_deep[r] = shownByProbe(diffuse_, reflectors_, -1);
+      shown_deep[k] = shownByProbe(diffuse_, reflectors_, -1);
     }
     std::vector<Drift> drift;
     for (size_t l = 0; l < levels_.size(); ++l)
@@ -111,15 +155,18 @@ class EnvmapMethod final : public Method {
       level->finish();
       level->nextFrame();
     }
-    if (variant_ == Variant::kBox) setUpBox(frame, *levels_.back());
+    if (boxed()) setUpBox(frame, *levels_.back());
     lookup_.probes = levels_.back().get();
   }
+
+  // envmap-box with a probe at each reflector: one proxy box for all.
+  bool boxed() const { return variant_ == Variant::kBox && scene_probes_.empty(); }
 
   // Captures the due (level, probe) units, a level's before the next level's.
   void captureDue(FrameContext& frame, std::vector<int> due, const std::vector<vec3>& centres,
                   const std::vector<std::vector<int>>& shown,
                   const std::vector<std::vector<int>>& shown_deep) {
-    const int count = int(reflectors_.size());
+    const int count = probeCount();
     std::stable_sort(due.begin(), due.end(), [&](int a, int b) { return a / count < b / count; });
     const float radius = std::max(frame.gpu.bounds().radius(), 1e-3f);
     int last_level = -1;
@@ -128,19 +175,27 @@ class EnvmapMethod final : public Method {
       if (l != last_level && l > 0) {
         // The lookups of this level read the level below (the box's, captured where it was).
         levels_[size_t(l - 1)]->finish();
-        if (variant_ == Variant::kBox) setUpBox(frame, *levels_[size_t(l - 1)]);
+        if (boxed()) setUpBox(frame, *levels_[size_t(l - 1)]);
         lookup_.probes = levels_[size_t(l - 1)].get();
         lookup_.bind(program_);
       }
       if (l != last_level) ++capture_passes_;
       last_level = l;
       const gpu::Program& others = l == 0 ? base_program_ : program_;
-      levels_[size_t(l)]->capture(frame.gpu, r, centres[size_t(r)],
-                                  (l == 0 ? shown : shown_deep)[size_t(r)], 1e-3f * radius,
+      const std::vector<int>& what = (l == 0 ? shown : shown_deep)[size_t(r)];
+      levels_[size_t(l)]->capture(frame.gpu, r, centres[size_t(r)], what, 1e-3f * radius,
                                   100.0f * radius, [&](int, const View& v) {
                                     frame.passes.begin(v, frame.settings);
                                     frame.passes.drawDirect();
-                                    frame.passes.drawReflectors(others, reflectors_[size_t(r)]);
+                                    if (scene_probes_.empty()) {
+                                      frame.passes.drawReflectors(others, reflectors_[size_t(r)]);
+                                      return;
+                                    }
+                                    std::vector<int> shown_reflectors;
+                                    for (int i : what)
+                                      if (frame.gpu.scene().isReflector(i))
+                                        shown_reflectors.push_back(i);
+                                    frame.passes.drawReflectorInstances(others, shown_reflectors);
                                   });
       ++cube_captures_;
     }
@@ -167,10 +222,12 @@ class EnvmapMethod final : public Method {
   bool infinite_;
   int size_;
   bool sphere_proxy_;
+  std::vector<ReflectionProbe> scene_probes_;  // a scene's probes, in blend order (or none)
   gpu::Program program_, base_program_;
   // Level l of every reflector's probe; the frame looks up the last.
   std::vector<std::unique_ptr<ProbeArray>> levels_;
   gpu::Buffer centres_;  // envmap-box: vec4 probe centre per reflector
+  gpu::Buffer volumes_;  // with a scene's probes: shading::ProbeVolumeData per probe
   // What the reflector pass (and Method::probeLookup's callers) binds: the last level's probes,
   // or, during captures, the level below the one captured; envmap-box's proxy and centres.
   ProbeLookup lookup_;

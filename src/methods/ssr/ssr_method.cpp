@@ -42,10 +42,8 @@ std::unique_ptr<Method> makeFallback(const MethodSetup& setup) {
 }
 
 // The screen-space pass's defines for the fallback's probe lookup (render/probe_lookup.h).
-std::vector<std::string> fallbackDefines(const std::string& fallback) {
-  ProbeLookup lookup;
-  lookup.box = fallback == "envmap-box";
-  return lookup.defines();
+std::vector<std::string> fallbackDefines(const Scene& scene, const std::string& fallback) {
+  return ProbeLookup::kindFor(scene, fallback == "envmap-box").defines();
 }
 
 class SsrMethod final : public Method {
@@ -65,7 +63,7 @@ class SsrMethod final : public Method {
             "render/shaders/scene.vert", "render/shaders/diffuse.frag", {"MIRAGE_GBUFFER 1"})),
         fallback_(makeFallback(setup)),
         program_(gpu::Program::graphics("render/shaders/fullscreen.vert", "methods/ssr/ssr.frag",
-                                        fallbackDefines(fallback_name_))) {}
+                                        fallbackDefines(setup.gpu.scene(), fallback_name_))) {}
 
   void update(FrameContext& frame) override { fallback_->update(frame); }
 

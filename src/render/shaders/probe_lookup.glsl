@@ -1,16 +1,32 @@
 // The reflection probes of `envmap` and `envmap-box` looked up along a reflected ray: the pass
 // that shades with them (those methods' reflector pass, `ssr`'s screen-space pass for the pixels
 // its screen cannot show) includes this file, with PROBE_BOX defined for the box proxy (a
-// parallax-corrected cube map), and binds them with render/probe_lookup.h. The probes' alpha
-// holds the distance from their centre to what they saw (PROBE_SKY_DISTANCE or more for the
-// sky: the half-float texture holds MISS_DISTANCE as its largest value or as +inf, by driver).
+// parallax-corrected cube map) and PROBE_BLEND for a scene's own probes (scene/probes.h: blended
+// by position, each with its proxy) instead of one probe per reflector, and binds them with
+// render/probe_lookup.h. The probes' alpha holds the distance from their centre to what they saw
+// (PROBE_SKY_DISTANCE or more for the sky: the half-float texture holds MISS_DISTANCE as its
+// largest value or as +inf, by driver).
 #include "render/shaders/probe_radiance.glsl"
 
 layout(binding = MIRAGE_UNIT_METHOD) uniform samplerCubeArray u_probes;
 
-#ifdef PROBE_BOX
+#if defined(PROBE_BOX) || defined(PROBE_BLEND)
 #include "shading/proxy.h"
+#endif
 
+#ifdef PROBE_BLEND
+#include "shading/probe_blend.h"
+// A scene's probes (scene/probes.h), in blend order: any reflector's point takes them in turn.
+// Read for values only (see docs/architecture.md on helper invocations).
+layout(std430, binding = MIRAGE_BIND_METHOD_SSBO) readonly buffer ProbeVolumes {
+  ProbeVolumeData probe_volume[];
+};
+uniform int u_probe_count;
+// The work of one lookup is bounded: the probes walked (a scene has at most 32) and the cube
+// lookups blended (a point in more than PROBE_MAX_BLENDED probes' volumes takes the first).
+#define PROBE_MAX_COUNT 32
+#define PROBE_MAX_BLENDED 4
+#elif defined(PROBE_BOX)
 uniform vec3 u_box_min;
 uniform vec3 u_box_max;
 uniform int u_proxy_sphere;  // 1: Bjorke's sphere proxy (the box's circumscribed sphere)
@@ -22,19 +38,18 @@ layout(std430, binding = MIRAGE_BIND_METHOD_SSBO) readonly buffer ProbeCentres {
 };
 #endif
 
-// The radiance reaching `position` along `direction` as reflector `reflector`'s probe saw it
-// (rgb, filtered by the direction's footprint dx, dy when mip-mapping is on), and the distance
-// to what it saw (a; MISS_DISTANCE for the sky).
-vec4 probe_lookup(vec3 position, vec3 direction, int reflector, vec3 dx, vec3 dy) {
-  float layer = float(reflector - 1);
+#if defined(PROBE_BOX) || defined(PROBE_BLEND)
+// Cube `layer`, captured at `centre`, along `direction` from `position` corrected for parallax
+// through a proxy: the sphere (sphere_c, sphere_r) when `sphere` is set, else the box
+// [bmin, bmax]; the distance from `position` to what the probe saw.
+vec4 probe_parallax_lookup(vec3 position, vec3 direction, float layer, vec3 centre, bool sphere,
+                           vec3 bmin, vec3 bmax, vec3 sphere_c, float sphere_r, vec3 dx,
+                           vec3 dy) {
   vec3 lookup = direction;
-#ifdef PROBE_BOX
-  vec3 centre = probe_centre[reflector - 1].xyz;
   float t = -1.0f;
-  vec3 corrected =
-      u_proxy_sphere != 0
-          ? sphere_parallax_direction(position, direction, u_sphere.xyz, u_sphere.w, centre, t)
-          : box_parallax_direction(position, direction, u_box_min, u_box_max, centre, t);
+  vec3 corrected = sphere
+                       ? sphere_parallax_direction(position, direction, sphere_c, sphere_r, centre, t)
+                       : box_parallax_direction(position, direction, bmin, bmax, centre, t);
   // The box point, wherever the ray leaves the box: also where the probe saw the sky there (a
   // test for the sky here would depend on how the driver stores MISS_DISTANCE in a half float;
   // a proxy open where nothing bounds the scene — hybrid's — sends such rays far, along their
@@ -47,15 +62,70 @@ vec4 probe_lookup(vec3 position, vec3 direction, int reflector, vec3 dx, vec3 dy
     dx *= scale;
     dy *= scale;
   }
-#endif
   vec4 probe = probe_radiance(u_probes, lookup, layer, dx, dy);
-#ifdef PROBE_BOX
   // The distance from the shaded point to what the probe saw along `lookup`.
   if (probe.a < PROBE_SKY_DISTANCE) {
     vec3 seen = centre + probe.a * normalize(lookup);
     return vec4(probe.rgb, length(seen - position));
   }
+  return vec4(probe.rgb, MISS_DISTANCE);
+}
 #endif
+
+#ifdef PROBE_BLEND
+// The scene's probes blended at `position` (shading/probe_blend.h): each takes its share of what
+// the probes before it left, the distant environment the rest; the distance is the largest
+// share's. `reflector` plays no part: a scene's probes are shared by every reflector.
+vec4 probe_lookup(vec3 position, vec3 direction, int reflector, vec3 dx, vec3 dy) {
+  vec3 rgb = vec3(0.0f);
+  float taken = 0.0f, largest = 0.0f, distance = MISS_DISTANCE;
+  int blended = 0;
+  for (int i = 0; i < min(u_probe_count, PROBE_MAX_COUNT); ++i) {
+    if (taken >= 1.0f || blended == PROBE_MAX_BLENDED) break;
+    ProbeVolumeData v = probe_volume[i];
+    float weight =
+        v.influence_hi.w > 0.0f
+            ? probe_sphere_weight(position, v.influence_lo.xyz, v.influence_hi.w, v.influence_lo.w)
+            : probe_box_weight(position, v.influence_lo.xyz, v.influence_hi.xyz, v.influence_lo.w);
+    float share = probe_blend_share(weight, taken);
+    if (share <= 0.0f) continue;
+#ifdef PROBE_BOX
+    vec4 seen = probe_parallax_lookup(position, direction, v.position.w, v.position.xyz,
+                                      v.proxy_hi.w > 0.0f, v.proxy_lo.xyz, v.proxy_hi.xyz,
+                                      v.proxy_lo.xyz, v.proxy_hi.w, dx, dy);
+#else
+    vec4 seen = probe_radiance(u_probes, direction, v.position.w, dx, dy);
+    if (seen.a >= PROBE_SKY_DISTANCE) seen.a = MISS_DISTANCE;
+#endif
+    rgb += share * seen.rgb;
+    taken += share;
+    if (share > largest) {
+      largest = share;
+      distance = seen.a;
+    }
+    ++blended;
+  }
+  // The distant environment as reflection.glsl's environment_radiance reads it (ssr's pass has
+  // the frame's block but not that file), filtered by the same footprint.
+  vec3 sky = frame.options.y != 0 ? textureGrad(u_environment, direction, dx, dy).rgb
+                                  : textureLod(u_environment, direction, 0.0f).rgb;
+  rgb += max(1.0f - taken, 0.0f) * sky;
+  return vec4(rgb, distance);
+}
+#else
+// The radiance reaching `position` along `direction` as reflector `reflector`'s probe saw it
+// (rgb, filtered by the direction's footprint dx, dy when mip-mapping is on), and the distance
+// to what it saw (a; MISS_DISTANCE for the sky).
+vec4 probe_lookup(vec3 position, vec3 direction, int reflector, vec3 dx, vec3 dy) {
+  float layer = float(reflector - 1);
+#ifdef PROBE_BOX
+  return probe_parallax_lookup(position, direction, layer, probe_centre[reflector - 1].xyz,
+                               u_proxy_sphere != 0, u_box_min, u_box_max, u_sphere.xyz,
+                               u_sphere.w, dx, dy);
+#else
+  vec4 probe = probe_radiance(u_probes, direction, layer, dx, dy);
   if (probe.a >= PROBE_SKY_DISTANCE) probe.a = MISS_DISTANCE;
   return probe;
+#endif
 }
+#endif
