@@ -183,19 +183,19 @@ class EnvmapMethod final : public Method {
       last_level = l;
       const gpu::Program& others = l == 0 ? base_program_ : program_;
       const std::vector<int>& what = (l == 0 ? shown : shown_deep)[size_t(r)];
+      // A scene's probe draws the reflectors it shows (once per capture, not per face).
+      std::vector<int> shown_reflectors;
+      if (!scene_probes_.empty())
+        for (int i : what)
+          if (frame.gpu.scene().isReflector(i)) shown_reflectors.push_back(i);
       levels_[size_t(l)]->capture(frame.gpu, r, centres[size_t(r)], what, 1e-3f * radius,
                                   100.0f * radius, [&](int, const View& v) {
                                     frame.passes.begin(v, frame.settings);
                                     frame.passes.drawDirect();
-                                    if (scene_probes_.empty()) {
+                                    if (scene_probes_.empty())
                                       frame.passes.drawReflectors(others, reflectors_[size_t(r)]);
-                                      return;
-                                    }
-                                    std::vector<int> shown_reflectors;
-                                    for (int i : what)
-                                      if (frame.gpu.scene().isReflector(i))
-                                        shown_reflectors.push_back(i);
-                                    frame.passes.drawReflectorInstances(others, shown_reflectors);
+                                    else
+                                      frame.passes.drawReflectorInstances(others, shown_reflectors);
                                   });
       ++cube_captures_;
     }

@@ -105,11 +105,7 @@ vec4 probe_lookup(vec3 position, vec3 direction, int reflector, vec3 dx, vec3 dy
     }
     ++blended;
   }
-  // The distant environment as reflection.glsl's environment_radiance reads it (ssr's pass has
-  // the frame's block but not that file), filtered by the same footprint.
-  vec3 sky = frame.options.y != 0 ? textureGrad(u_environment, direction, dx, dy).rgb
-                                  : textureLod(u_environment, direction, 0.0f).rgb;
-  rgb += max(1.0f - taken, 0.0f) * sky;
+  rgb += max(1.0f - taken, 0.0f) * environment_lookup(direction, dx, dy);
   return vec4(rgb, distance);
 }
 #else

@@ -16,8 +16,7 @@ vec3 g_dPdy = vec3(0.0f);
 // The scene's distant environment along `direction`, filtered by the reflected ray's footprint
 // when mip-mapping is on.
 vec3 environment_radiance(vec3 direction) {
-  if (frame.options.y != 0) return textureGrad(u_environment, direction, g_dRdx, g_dRdy).rgb;
-  return textureLod(u_environment, direction, 0.0f).rgb;
+  return environment_lookup(direction, g_dRdx, g_dRdy);
 }
 
 #ifndef MIRAGE_NO_REFLECTION
