@@ -43,8 +43,13 @@ TEST_F(Soak, EveryMethodPlayingHoldsItsResourcesFlat) {
   EXPECT_EQ(last["gl_handles"], one["gl_handles"]) << res.dump(1);
   EXPECT_GT(one["gl_objects"].get<long>(), 0);
   // What may grow: the timers' results (a few hundred bytes a frame) and the allocator's slack.
-  const double growth = last["rss_mib"].get<double>() - res[2]["rss_mib"].get<double>();
-  EXPECT_LT(growth, 16.0) << res.dump(1);
+  // Warm-up is not a leak (the driver's caches and the allocator's arenas settle over the first
+  // hundred frames: +16 MiB from frame 10 to 100 on one CI machine, +0.9 MiB from 100 to 200); a
+  // leak grows at a steady rate, so the steady hundred frames are held to 80 KiB a frame.
+  const auto& steady = res[3];
+  ASSERT_EQ(steady["frame"], 100);
+  const double growth = last["rss_mib"].get<double>() - steady["rss_mib"].get<double>();
+  EXPECT_LT(growth, 8.0) << res.dump(1);
   EXPECT_GT(last["rss_mib"].get<double>(), 1.0);
 }
 
