@@ -22,14 +22,15 @@ void printProbes(const Scene& scene) {
     std::printf("  probes: one at each reflector's centre (the scene gives none)\n");
     return;
   }
-  std::printf("  probes (in blend order): %-20s %-8s %-9s %8s  %s\n", "name", "priority",
-              "influence", "blend", "influences");
+  std::printf("  probes, in blend order:\n");
+  std::printf("  %-28s %8s %-9s %8s  %s\n", "probe", "priority", "influence", "blend",
+              "influences");
   for (int k : probeBlendOrder(scene.probes)) {
     const ReflectionProbe& p = scene.probes[size_t(k)];
     std::string influenced;
     for (int r : reflectorsInfluenced(scene, p))
       influenced += (influenced.empty() ? "" : ", ") + scene.instances[size_t(r)].name;
-    std::printf("  %-44s %-8d %-9s %8g  %s\n", p.name.c_str(), p.priority,
+    std::printf("  %-28s %8d %-9s %8g  %s\n", p.name.c_str(), p.priority,
                 p.influence.sphere ? "sphere" : "box", double(p.blend_distance),
                 influenced.empty() ? "(none)" : influenced.c_str());
   }

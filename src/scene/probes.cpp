@@ -9,11 +9,6 @@
 
 namespace mirage {
 
-Bounds3 ProbeVolume::bounds() const {
-  if (!sphere) return box;
-  return Bounds3{centre - vec3(radius), centre + vec3(radius)};
-}
-
 bool ProbeVolume::contains(const vec3& p) const {
   return sphere ? glm::length(p - centre) <= radius : box.contains(p);
 }
@@ -57,10 +52,11 @@ std::vector<int> reflectorsInfluenced(const Scene& scene, const ReflectionProbe&
   return out;
 }
 
-std::vector<int> shownByReflectionProbe(const Scene& scene, const ReflectionProbe& probe) {
+std::vector<int> shownByReflectionProbe(const Scene& scene, const ReflectionProbe& probe,
+                                        const std::function<Bounds3(int)>& instance_bounds) {
   std::vector<int> out;
   for (size_t i = 0; i < scene.instances.size(); ++i)
-    if (!scene.isReflector(int(i)) || !scene.instanceBounds(int(i)).contains(probe.position))
+    if (!scene.isReflector(int(i)) || !instance_bounds(int(i)).contains(probe.position))
       out.push_back(int(i));
   return out;
 }

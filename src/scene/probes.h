@@ -6,6 +6,7 @@
 // How overlapping probes share a point: shading/probe_blend.h.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -22,8 +23,6 @@ struct ProbeVolume {
   vec3 centre{0.0f};
   float radius = 0.0f;
 
-  // The box that holds the volume.
-  Bounds3 bounds() const;
   bool contains(const vec3& p) const;
   float volume() const;
 };
@@ -47,8 +46,10 @@ std::vector<int> probeBlendOrder(const std::vector<ReflectionProbe>& probes);
 std::vector<int> reflectorsInfluenced(const Scene& scene, const ReflectionProbe& probe);
 
 // What a probe shows: every diffuse instance, and every reflector but those whose bounds hold the
-// probe's position (a probe captured inside an object sees its inside).
-std::vector<int> shownByReflectionProbe(const Scene& scene, const ReflectionProbe& probe);
+// probe's position (a probe captured inside an object sees its inside). `instance_bounds` gives an
+// instance's world bounds at the capture's time (GpuScene::instanceBounds: the scene moves).
+std::vector<int> shownByReflectionProbe(const Scene& scene, const ReflectionProbe& probe,
+                                        const std::function<Bounds3(int)>& instance_bounds);
 
 // Warnings for probes that influence no reflector, and reflectors that no probe influences (they
 // see the distant environment only).

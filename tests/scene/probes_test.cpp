@@ -81,9 +81,17 @@ TEST(SceneProbes, InfluenceTheReflectorsTheirVolumesMeetAndShowAllButTheOneTheyA
   const int west_ball = 2, east_ball = 3;
   EXPECT_EQ(reflectorsInfluenced(scene, scene.probes[0]), (std::vector<int>{west_ball}));
   EXPECT_EQ(reflectorsInfluenced(scene, scene.probes[1]), (std::vector<int>{east_ball}));
-  EXPECT_EQ(shownByReflectionProbe(scene, scene.probes[0]), (std::vector<int>{0, 1, 2, 3}));
+  const auto at_rest = [&](int i) { return scene.instanceBounds(i); };
+  EXPECT_EQ(shownByReflectionProbe(scene, scene.probes[0], at_rest),
+            (std::vector<int>{0, 1, 2, 3}));
   scene.probes[0].position = vec3(-3.0f, 1.0f, 0.0f);  // inside the west ball
-  EXPECT_EQ(shownByReflectionProbe(scene, scene.probes[0]), (std::vector<int>{0, 1, 3}));
+  EXPECT_EQ(shownByReflectionProbe(scene, scene.probes[0], at_rest), (std::vector<int>{0, 1, 3}));
+  // The bounds at the capture's time decide: the ball moved away shows again.
+  const auto moved = [&](int i) {
+    const Bounds3 b = scene.instanceBounds(i);
+    return i == west_ball ? Bounds3{b.lo + vec3(0, 10, 0), b.hi + vec3(0, 10, 0)} : b;
+  };
+  EXPECT_EQ(shownByReflectionProbe(scene, scene.probes[0], moved), (std::vector<int>{0, 1, 2, 3}));
   EXPECT_TRUE(probeWarnings(scene).empty());
 }
 

@@ -133,7 +133,8 @@ class EnvmapMethod final : public Method {
         // A scene's probe shows the same at every level (the reflectors in it through the level
         // below), but the reflectors that hold its position.
         centres.push_back(scene_probes_[k].position);
-        shown[k] = shownByReflectionProbe(frame.gpu.scene(), scene_probes_[k]);
+        shown[k] = shownByReflectionProbe(frame.gpu.scene(), scene_probes_[k],
+                                          [&](int i) { return frame.gpu.instanceBounds(i); });
         shown_deep[k] = shown[k];
         continue;
       }
