@@ -14,4 +14,11 @@ ParamSpec probeProxyParam() {
       "sphere (Bjorke)");
 }
 
+ParamSpec beyondOrderParam() {
+  return ParamSpec::choice<BeyondOrder>(
+      "beyond-order", kBeyondOrders, BeyondOrder::kProbe,
+      "a reflector met after the method's last bounce (at --order above the method's own): shown "
+      "through its reflection probe, or in its base colour");
+}
+
 }  // namespace mirage

@@ -37,4 +37,14 @@ void ProbeLookup::bind(const gpu::Program& program) const {
   program.set("u_sphere", vec4(proxy.center(), proxy.radius()));
 }
 
+Bounds3 openProxy(const Bounds3& shown, const Bounds3& centres, float open) {
+  Bounds3 proxy{centres.lo - vec3(open), centres.hi + vec3(open)};
+  if (shown.empty()) return proxy;
+  for (int a = 0; a < 3; ++a) {
+    if (shown.lo[a] < centres.lo[a]) proxy.lo[a] = shown.lo[a];
+    if (shown.hi[a] > centres.hi[a]) proxy.hi[a] = shown.hi[a];
+  }
+  return proxy;
+}
+
 }  // namespace mirage

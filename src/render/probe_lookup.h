@@ -40,4 +40,10 @@ struct ProbeLookup {
   void bind(const gpu::Program& program) const;
 };
 
+// A box proxy for probes captured at the points `centres` bounds: the bounds of what they show,
+// open (`open` away) on every side where those do not enclose the centres. A floor's box has no
+// top, so that a ray leaving a reflector upwards meets the sky along its own direction, not the
+// floor's plane lifted to the reflector's height; a room's box is the room.
+Bounds3 openProxy(const Bounds3& shown, const Bounds3& centres, float open);
+
 }  // namespace mirage

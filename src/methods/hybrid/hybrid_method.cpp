@@ -250,10 +250,8 @@ class HybridMethod final : public Method {
   }
 
   // Binds the background for the resolve pass: the probes, where each was captured, and the
-  // proxy — the bounds of what they show (the environment, the objects without points), open on
-  // every side where they do not enclose the probes: a floor's box has no top, so that a ray
-  // leaving a reflector upwards meets the sky along its own direction, not the floor's plane
-  // lifted to the reflector's height.
+  // proxy — the bounds of what they show (the environment, the objects without points), open
+  // where they do not enclose the probes (openProxy).
   void bindBackground(FrameContext& frame) {
     ProbeLookup lookup = backgroundLookup();
     lookup.probes = &probes_;
@@ -268,13 +266,7 @@ class HybridMethod final : public Method {
     centres_.upload(std::span<const vec4>(centres));
     Bounds3 shown;
     for (int i : background_) shown.extend(frame.gpu.instanceBounds(i));
-    const float open = 1e4f * std::max(frame.gpu.bounds().radius(), 1.0f);
-    Bounds3& proxy = lookup.proxy;
-    proxy = Bounds3{around.lo - vec3(open), around.hi + vec3(open)};
-    for (int a = 0; a < 3 && !shown.empty(); ++a) {
-      if (shown.lo[a] < around.lo[a]) proxy.lo[a] = shown.lo[a];
-      if (shown.hi[a] > around.hi[a]) proxy.hi[a] = shown.hi[a];
-    }
+    lookup.proxy = openProxy(shown, around, 1e4f * std::max(frame.gpu.bounds().radius(), 1.0f));
     lookup.bind(resolve_program_);
   }
 

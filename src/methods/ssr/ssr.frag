@@ -29,6 +29,7 @@ uniform float u_edge_fade;  // --ssr-edge-fade: the fade's width, a fraction of 
 uniform float u_near;
 uniform float u_far;
 uniform vec3 u_forward;  // the view direction (world)
+uniform int u_beyond_probe;  // 1: a hit on a reflector shows its probe (--beyond-order probe)
 
 // The pyramid, level 0 the depth buffer's copy (hiz_pyramid.h): r the nearest depth, g the
 // behind limit of the farthest drawn. The march never leaves the padded pyramid: its ray is
@@ -49,6 +50,20 @@ vec3 to_window(vec3 world) {
 // One atomic a pixel (and one more in the fade), into the pixel's slot (counter_slots.glsl): the
 // pixel count and the fallback's whole pixels are sums of these on the CPU.
 void count(int which) { atomicAdd(ssr_counts[counter_slot() + which], 1u); }
+
+// What a hit at window position `at` (world point `hit`, met along `direction`) shows when the
+// G-buffer holds a reflector there: that reflector shaded with its probe along the ray reflected
+// again (the second bounce, beyond ssr's order), instead of the base colour the direct view drew
+// it in (`base`). The hit's footprint is not known here: the probe is read unfiltered.
+vec3 beyond_order_radiance(vec2 at, vec3 hit, vec3 direction, vec3 base) {
+  vec4 g = texelFetch(u_gbuffer_normal, clamp(ivec2(at), ivec2(0), u_size - 1), 0);
+  if (g.z < 0.5f) return base;
+  vec3 n = octahedral_decode(g.xy);
+  vec4 probe = probe_lookup(hit, reflect_direction(direction, n), int(g.w + 0.5f), vec3(0.0f),
+                            vec3(0.0f));
+  MaterialData m = materials[int(g.z + 0.5f) - 1];
+  return shade_reflector(m, max(dot(n, -direction), 0.0f), probe.a, probe.rgb);
+}
 
 // The radiance along the reflected ray from the pixel at `from` (window coordinates; `position` in
 // the world) and the hit's distance; g_coverage its weight.
@@ -100,7 +115,9 @@ vec4 reflected_radiance(vec3 from, vec3 position, vec3 direction) {
                 uint((1.0f - g_coverage) * 1024.0f + 0.5f));
     }
     vec3 hit = gbuffer_world(vec3(at.xy, ssr_bilinear_depth(at.xy, u_size)));
-    return vec4(textureLod(u_color, at.xy / vec2(u_size), 0.0f).rgb, length(hit - position));
+    vec3 colour = textureLod(u_color, at.xy / vec2(u_size), 0.0f).rgb;
+    if (u_beyond_probe != 0) colour = beyond_order_radiance(at.xy, hit, direction, colour);
+    return vec4(colour, length(hit - position));
   }
   return vec4(0.0f, 0.0f, 0.0f, MISS_DISTANCE);
 }

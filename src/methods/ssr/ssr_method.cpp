@@ -59,6 +59,7 @@ class SsrMethod final : public Method {
         thickness_(float(setup.params.real("ssr-thickness")) *
                    std::max(setup.gpu.scene().bounds().radius(), 1e-6f)),
         edge_fade_(float(setup.params.real("ssr-edge-fade"))),
+        beyond_order_(setup.params.choice<BeyondOrder>("beyond-order", kBeyondOrders)),
         gbuffer_diffuse_(gpu::Program::graphics(
             "render/shaders/scene.vert", "render/shaders/diffuse.frag", {"MIRAGE_GBUFFER 1"})),
         fallback_(makeFallback(setup)),
@@ -93,6 +94,9 @@ class SsrMethod final : public Method {
     program_.set("u_near", frame.view.nearPlane());
     program_.set("u_far", frame.view.farPlane());
     program_.set("u_forward", frame.view.forward());
+    // A reflector the screen shows at a hit is order 2: its probe shows it when that is asked.
+    program_.set("u_beyond_probe",
+                 beyond_order_ == BeyondOrder::kProbe && frame.settings.order > 1 ? 1 : 0);
     // Over the reflector pixels of the G-buffer; the target's alpha (eye distance) and reflector
     // ids are kept.
     ShadeOptions options;
@@ -147,6 +151,7 @@ class SsrMethod final : public Method {
   std::string fallback_name_;
   int max_steps_;
   float thickness_, edge_fade_;
+  BeyondOrder beyond_order_;
   gpu::Program gbuffer_diffuse_;
   // The probes the screen-space pass shows where the screen has no data: the fallback method
   // keeps them up to date (update) and lends them (probeLookup); it never draws.
@@ -181,7 +186,7 @@ MethodEntry ssrMethodEntry() {
       ParamSpec::choice("ssr-fallback", {"envmap", "envmap-box"}, "envmap-box",
                         "ssr: the reflection probes shown where the screen has no data"),
       // The fallback's own parameters (envmap-box's, a superset of envmap's).
-      envmapSizeParam(), probeProxyParam()};
+      envmapSizeParam(), probeProxyParam(), beyondOrderParam()};
   for (ParamSpec& spec : probeRecaptureParams()) entry.info.params.push_back(std::move(spec));
   entry.info.counters = {"cube_captures", "capture_passes"};
   entry.info.frame_stats = {"ssr_hit_fraction", "ssr_fallback_fraction", "ssr_steps_per_ray"};
