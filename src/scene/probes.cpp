@@ -74,10 +74,10 @@ std::vector<std::string> probeWarnings(const Scene& scene) {
   }
   for (int r : scene.reflectorInstances())
     if (!covered[size_t(r)])
-      out.push_back(fmt::format(
-          "{}: reflector '{}' is in no probe's influence volume: it shows the distant "
-          "environment only",
-          scene.source, scene.instances[size_t(r)].name));
+      out.push_back(
+          fmt::format("{}: reflector '{}' is in no probe's influence volume: it shows the distant "
+                      "environment only",
+                      scene.source, scene.instances[size_t(r)].name));
   return out;
 }
 

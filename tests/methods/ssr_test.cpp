@@ -233,7 +233,8 @@ TEST_F(SsrGpu, BeyondItsOrderAReflectorOnTheScreenShowsItsProbe) {
   const ivec2 size{240, 180};
   FrameSettings settings;
   settings.order = 2;
-  const RenderPair probe = renderWithTruth(scene, "ssr", size, settings, {{"beyond-order", "probe"}});
+  const RenderPair probe =
+      renderWithTruth(scene, "ssr", size, settings, {{"beyond-order", "probe"}});
   const RenderPair base = renderWithTruth(scene, "ssr", size, settings, {{"beyond-order", "base"}});
   const EnvironmentMap sky = EnvironmentMap::sky(scene.light, 16);  // hits need no radiance
   RayTracer tracer(scene, sky);
@@ -246,9 +247,10 @@ TEST_F(SsrGpu, BeyondItsOrderAReflectorOnTheScreenShowsItsProbe) {
   const auto psnr = [](const Region& r) {
     return psnrFromMse(r.sse / (3.0 * double(std::max<size_t>(r.pixels, 1))));
   };
-  std::printf("spheres9, reflectors seen in reflectors (%zu pixels): probe %.2f dB, base %.2f dB; "
-              "%zu of %zu other reflector pixels differ\n",
-              probe_seen.pixels, psnr(probe_seen), psnr(base_seen), rest.differing, rest.pixels);
+  std::printf(
+      "spheres9, reflectors seen in reflectors (%zu pixels): probe %.2f dB, base %.2f dB; "
+      "%zu of %zu other reflector pixels differ\n",
+      probe_seen.pixels, psnr(probe_seen), psnr(base_seen), rest.differing, rest.pixels);
   ASSERT_GT(probe_seen.pixels, 500u);
   EXPECT_GT(probe_seen.differing, probe_seen.pixels / 2) << "the probe path did not run";
   // Measured 19.5 against 14.7 dB here (displayed colours, one sample; 17.8 against 8.6 dB in

@@ -112,22 +112,30 @@ TEST(SceneProbes, BadProbesAreErrorsNamingTheFieldAndTheAllowedValues) {
   EXPECT_NE(errorOf(R"([{"position": [0, 1, 0], "influence": {"sphere": 2}, "blend_distance": 3}])")
                 .find("probes[0].blend_distance = 3 is outside the allowed range [0, 2]"),
             std::string::npos);
-  EXPECT_NE(errorOf(R"([{"position": [0, 1, 0], "influence": {"box": {"min": [0, 0, 0], "max": [1, 0, 1]}}}])")
-                .find("probes[0].influence.box.max = [1, 0, 1]: must exceed min"),
-            std::string::npos);
-  EXPECT_NE(errorOf(R"([{"position": [5, 1, 0], "influence": {"box": {"min": [-1, 0, -1], "max": [1, 2, 1]}}}])")
-                .find("probes[0].influence does not hold the probe's position [5, 1, 0]"),
-            std::string::npos);
-  EXPECT_NE(errorOf(R"([{"position": [0, 1, 0], "influence": {"sphere": 9}, "proxy": {"box": {"min": [1, 0, 0], "max": [2, 2, 2]}}}])")
-                .find("probes[0].proxy does not hold the probe's position [0, 1, 0]"),
-            std::string::npos);
+  EXPECT_NE(
+      errorOf(
+          R"([{"position": [0, 1, 0], "influence": {"box": {"min": [0, 0, 0], "max": [1, 0, 1]}}}])")
+          .find("probes[0].influence.box.max = [1, 0, 1]: must exceed min"),
+      std::string::npos);
+  EXPECT_NE(
+      errorOf(
+          R"([{"position": [5, 1, 0], "influence": {"box": {"min": [-1, 0, -1], "max": [1, 2, 1]}}}])")
+          .find("probes[0].influence does not hold the probe's position [5, 1, 0]"),
+      std::string::npos);
+  EXPECT_NE(
+      errorOf(
+          R"([{"position": [0, 1, 0], "influence": {"sphere": 9}, "proxy": {"box": {"min": [1, 0, 0], "max": [2, 2, 2]}}}])")
+          .find("probes[0].proxy does not hold the probe's position [0, 1, 0]"),
+      std::string::npos);
   EXPECT_NE(errorOf(R"([{"position": [5, 1, 0], "influence": {"sphere": 9}, "proxy": {"sphere": 1},
                         "priority": 1.5}])")
                 .find("probes[0].priority"),
             std::string::npos);
-  EXPECT_NE(errorOf(R"([{"position": [0, 1, 0], "influence": {"sphere": 2, "box": {"size": [1, 1, 1]}}}])")
-                .find("probes[0].influence needs exactly one of \"box\" and \"sphere\""),
-            std::string::npos);
+  EXPECT_NE(
+      errorOf(
+          R"([{"position": [0, 1, 0], "influence": {"sphere": 2, "box": {"size": [1, 1, 1]}}}])")
+          .find("probes[0].influence needs exactly one of \"box\" and \"sphere\""),
+      std::string::npos);
   EXPECT_NE(errorOf(R"([{"position": [0, 1, 0], "influence": {"sphere": 2}, "size": 3}])")
                 .find("probes[0]"),
             std::string::npos);

@@ -171,7 +171,7 @@ MethodEntry ssrMethodEntry() {
   entry.info.description =
       "screen-space reflections: each reflected ray marched through a hierarchical-Z pyramid of "
       "the direct view's depth, the hit pixel's colour, a reflection probe (--ssr-fallback) where "
-      "the screen has no data; order 1 only";
+      "the screen has no data; order 1 on the screen, a reflector it hits shaded with its probe";
   entry.info.max_order = 1;
   entry.info.params = {
       ParamSpec::integer("ssr-steps", 8, 4096, 256,
