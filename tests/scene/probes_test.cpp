@@ -109,42 +109,37 @@ TEST(SceneProbes, WarnOfAProbeThatInfluencesNothingAndAReflectorThatNoProbeDoes)
 }
 
 TEST(SceneProbes, BadProbesAreErrorsNamingTheFieldAndTheAllowedValues) {
-  EXPECT_NE(errorOf(R"([{"position": [0, 1, 0], "influence": {"sphere": 2}, "blend_distance": 3}])")
-                .find("probes[0].blend_distance = 3 is outside the allowed range [0, 2]"),
-            std::string::npos);
-  EXPECT_NE(
-      errorOf(
-          R"([{"position": [0, 1, 0], "influence": {"box": {"min": [0, 0, 0], "max": [1, 0, 1]}}}])")
-          .find("probes[0].influence.box.max = [1, 0, 1]: must exceed min"),
-      std::string::npos);
-  EXPECT_NE(
-      errorOf(
-          R"([{"position": [5, 1, 0], "influence": {"box": {"min": [-1, 0, -1], "max": [1, 2, 1]}}}])")
-          .find("probes[0].influence does not hold the probe's position [5, 1, 0]"),
-      std::string::npos);
-  EXPECT_NE(
-      errorOf(
-          R"([{"position": [0, 1, 0], "influence": {"sphere": 9}, "proxy": {"box": {"min": [1, 0, 0], "max": [2, 2, 2]}}}])")
-          .find("probes[0].proxy does not hold the probe's position [0, 1, 0]"),
-      std::string::npos);
-  EXPECT_NE(errorOf(R"([{"position": [5, 1, 0], "influence": {"sphere": 9}, "proxy": {"sphere": 1},
-                        "priority": 1.5}])")
-                .find("probes[0].priority"),
-            std::string::npos);
-  EXPECT_NE(
-      errorOf(
-          R"([{"position": [0, 1, 0], "influence": {"sphere": 2, "box": {"size": [1, 1, 1]}}}])")
-          .find("probes[0].influence needs exactly one of \"box\" and \"sphere\""),
-      std::string::npos);
-  EXPECT_NE(errorOf(R"([{"position": [0, 1, 0], "influence": {"sphere": 2}, "size": 3}])")
-                .find("probes[0]"),
-            std::string::npos);
-  EXPECT_NE(errorOf(R"([{"name": "a", "position": [0, 1, 0], "influence": {"sphere": 2}},
-                        {"name": "a", "position": [0, 1, 0], "influence": {"sphere": 2}}])")
-                .find("probes[1].name = 'a' is already the name of another probe"),
-            std::string::npos);
-  EXPECT_NE(errorOf(R"({"position": [0, 1, 0]})").find("probes must be an array"),
-            std::string::npos);
+  struct Case {
+    const char* probes;   // the scene file's "probes"
+    const char* message;  // what its error says
+  };
+  const Case cases[] = {
+      {R"([{"position": [0, 1, 0], "influence": {"sphere": 2}, "blend_distance": 3}])",
+       "probes[0].blend_distance = 3 is outside the allowed range [0, 2]"},
+      {R"([{"position": [0, 1, 0],
+            "influence": {"box": {"min": [0, 0, 0], "max": [1, 0, 1]}}}])",
+       "probes[0].influence.box.max = [1, 0, 1]: must exceed min"},
+      {R"([{"position": [5, 1, 0],
+            "influence": {"box": {"min": [-1, 0, -1], "max": [1, 2, 1]}}}])",
+       "probes[0].influence does not hold the probe's position [5, 1, 0]"},
+      {R"([{"position": [0, 1, 0], "influence": {"sphere": 9},
+            "proxy": {"box": {"min": [1, 0, 0], "max": [2, 2, 2]}}}])",
+       "probes[0].proxy does not hold the probe's position [0, 1, 0]"},
+      {R"([{"position": [5, 1, 0], "influence": {"sphere": 9}, "proxy": {"sphere": 1},
+            "priority": 1.5}])",
+       "probes[0].priority"},
+      {R"([{"position": [0, 1, 0], "influence": {"sphere": 2, "box": {"size": [1, 1, 1]}}}])",
+       "probes[0].influence needs exactly one of \"box\" and \"sphere\""},
+      {R"([{"position": [0, 1, 0], "influence": {"sphere": 2}, "size": 3}])", "probes[0]"},
+      {R"([{"name": "a", "position": [0, 1, 0], "influence": {"sphere": 2}},
+           {"name": "a", "position": [0, 1, 0], "influence": {"sphere": 2}}])",
+       "probes[1].name = 'a' is already the name of another probe"},
+      {R"({"position": [0, 1, 0]})", "probes must be an array"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.probes);
+    EXPECT_NE(errorOf(c.probes).find(c.message), std::string::npos);
+  }
 }
 
 }  // namespace
